@@ -1,0 +1,36 @@
+//! Typed errors for input a query cannot answer.
+
+use core::fmt;
+
+/// Why an input was rejected. Every checked entry point of the crate
+/// (`try_*` functions, validating constructors) returns this instead of
+/// panicking or giving a meaningless answer.
+///
+/// ```
+/// use exactray::{InputError, predicates::try_orient2d};
+/// use glam::DVec2;
+/// let err = try_orient2d(DVec2::ZERO, DVec2::new(f64::NAN, 0.0), DVec2::X).unwrap_err();
+/// assert_eq!(err, InputError::NonFinite { argument: "b" });
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum InputError {
+    /// A coordinate of the named argument is NaN or infinite.
+    NonFinite {
+        /// The parameter name of the offending argument, as in the function's
+        /// signature (`"a"`, `"b"`, ...).
+        argument: &'static str,
+    },
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            InputError::NonFinite { argument } => {
+                write!(f, "argument `{argument}` has a NaN or infinite coordinate")
+            }
+        }
+    }
+}
+
+impl core::error::Error for InputError {}

@@ -1,0 +1,1 @@
+//! Exact stages shared by the predicates (in progress).

@@ -1,0 +1,246 @@
+//! Exact geometric predicates for every finite `f64` input.
+//!
+//! Each predicate returns the exact [`Sign`] of a polynomial in its input
+//! coordinates, taking every coordinate as the exact number its bits denote.
+//! There is no input range restriction: subnormals, values whose products
+//! underflow (|x| around 1e-160), values whose products overflow (around
+//! 1e+160) and mixed magnitudes (1e-300 beside 1e+300) are all exact.
+//!
+//! # Sign conventions
+//! - [`orient2d`]`(a, b, c)` is the sign of `(b - a) x (c - a)`: positive when
+//!   `a, b, c` turn counterclockwise (CGAL `LEFT_TURN`; same as Shewchuk's).
+//! - [`orient3d`]`(a, b, c, d)` is the sign of `det[b - a, c - a, d - a]`
+//!   (CGAL `orientation`). It is positive when `d` lies on the side of the
+//!   plane through `a, b, c` that their counterclockwise order, seen from `d`,
+//!   faces. This is the **opposite** of Shewchuk's `orient3d` (and of the
+//!   `robust` crate's), which is positive when `d` lies *below* the plane of
+//!   counterclockwise `a, b, c`: `orient3d(a, b, c, d) == -sign(robust::orient3d(a, b, c, d))`.
+//! - [`incircle`]`(a, b, c, d)` is positive when `d` lies inside the circle
+//!   through `a, b, c` and `a, b, c` are counterclockwise (the sign flips with
+//!   their order); CGAL `side_of_oriented_circle`, same as Shewchuk's.
+//! - [`insphere`]`(a, b, c, d, e)` is positive when `e` lies inside the sphere
+//!   through `a, b, c, d` and `orient3d(a, b, c, d)` is positive (CGAL
+//!   `side_of_oriented_sphere`). Shewchuk's `insphere` assumes his opposite
+//!   orientation, so it equals `-sign(robust::insphere(a, b, c, d, e))`.
+//!
+//! # Non-finite input
+//! The plain functions never panic. On a NaN or infinite coordinate they
+//! return [`Sign::Zero`], which means "no answer" there; the `try_` variants
+//! return [`InputError::NonFinite`] naming the first bad argument instead.
+//!
+//! # How exactness is kept cheap
+//! Every predicate runs a ladder of stages, each named for what it
+//! guarantees, and stops at the first one that can certify the sign:
+//! 1. **filtered**: the plain `f64` determinant and an error bound computed
+//!    beside it (Shewchuk's stage A bound, widened by an absolute term so
+//!    that it holds under underflow too; overflow makes the bound infinite
+//!    and the stage declines). Answers almost all ordinary inputs.
+//! 2. **small-integer exact**: when each input coordinate is an integer
+//!    multiple of a common power of two that leaves it 62 bits or fewer, the
+//!    determinant is evaluated exactly in 64/128/256/320-bit integers.
+//!    Answers degenerate and near-degenerate inputs, and tiny or huge ones.
+//! 3. **adaptive**: Shewchuk's adaptive stages (the `robust` crate) on inputs
+//!    scaled by a power of two, only when the exponent spread proves that no
+//!    step of that arithmetic underflows or overflows.
+//! 4. **scaled filter**: inputs scaled by powers of two so that the largest
+//!    is near 1, with an absolute term in the error bound for what the
+//!    scaling flushed towards zero. Answers mixed magnitudes that are not
+//!    near-degenerate.
+//! 5. **big-integer exact**: fixed-capacity integers on the stack (no
+//!    allocation) holding every coordinate at the finest common binary
+//!    exponent. Always exact, used only when every other stage declined.
+//!
+//! References: J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic
+//! and Fast Robust Geometric Predicates", Discrete & Computational Geometry
+//! 18 (1997); A. Meyer and S. Pion, "FPG: A code generator for fast and
+//! certified geometric predicates", RNC 2008.
+
+mod exact_stage;
+mod incircle;
+mod insphere;
+mod orient2d;
+mod orient3d;
+pub mod plane_side;
+
+use crate::error::InputError;
+use crate::point::{IntoDVec2, IntoDVec3};
+use crate::sign::Sign;
+use glam::{DVec2, DVec3};
+
+pub use plane_side::{SideRelation, same_side, side_of_plane, try_same_side, try_side_of_plane};
+
+/// Checks that every coordinate of every named point is finite.
+#[inline]
+pub(crate) fn check_finite2(points: &[(&'static str, DVec2)]) -> Result<(), InputError> {
+    for &(argument, p) in points {
+        if !p.is_finite() {
+            return Err(InputError::NonFinite { argument });
+        }
+    }
+    Ok(())
+}
+
+/// Checks that every coordinate of every named point is finite.
+#[inline]
+pub(crate) fn check_finite3(points: &[(&'static str, DVec3)]) -> Result<(), InputError> {
+    for &(argument, p) in points {
+        if !p.is_finite() {
+            return Err(InputError::NonFinite { argument });
+        }
+    }
+    Ok(())
+}
+
+/// Exact orientation of three 2D points: the sign of `(b - a) x (c - a)`.
+///
+/// `Positive` when `a, b, c` turn counterclockwise, `Negative` when
+/// clockwise, `Zero` when they are collinear. Exact for every finite input.
+/// A NaN or infinite coordinate gives `Zero` (see [`try_orient2d`]).
+///
+/// ```
+/// use exactray::{orient2d, Sign};
+/// use glam::DVec2;
+/// assert_eq!(orient2d(DVec2::ZERO, DVec2::X, DVec2::Y), Sign::Positive);
+/// // 0.1 + 0.2 != 0.3 in f64: these three points are not collinear, and the
+/// // exact predicate says which side the third one is on.
+/// let s = orient2d(DVec2::new(0.1, 0.1), DVec2::new(0.2, 0.2), DVec2::new(0.3, 0.3));
+/// assert_eq!(s, Sign::Negative);
+/// ```
+#[inline]
+pub fn orient2d(a: impl IntoDVec2, b: impl IntoDVec2, c: impl IntoDVec2) -> Sign {
+    orient2d::orient2d(a.into_dvec2(), b.into_dvec2(), c.into_dvec2())
+}
+
+/// [`orient2d`] that rejects a NaN or infinite coordinate with
+/// [`InputError::NonFinite`] naming the argument.
+#[inline]
+pub fn try_orient2d(
+    a: impl IntoDVec2,
+    b: impl IntoDVec2,
+    c: impl IntoDVec2,
+) -> Result<Sign, InputError> {
+    let (a, b, c) = (a.into_dvec2(), b.into_dvec2(), c.into_dvec2());
+    check_finite2(&[("a", a), ("b", b), ("c", c)])?;
+    Ok(orient2d::orient2d(a, b, c))
+}
+
+/// Exact orientation of four 3D points: the sign of `det[b - a, c - a, d - a]`
+/// (CGAL's convention; the opposite of Shewchuk's, see the [module docs](self)).
+///
+/// `Zero` when the four points are coplanar. Exact for every finite input. A
+/// NaN or infinite coordinate gives `Zero` (see [`try_orient3d`]).
+///
+/// ```
+/// use exactray::{orient3d, Sign};
+/// use glam::DVec3;
+/// // d above the counterclockwise triangle a, b, c (seen from +z): positive.
+/// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z), Sign::Positive);
+/// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(0.3, 0.7, 0.0)), Sign::Zero);
+/// ```
+#[inline]
+pub fn orient3d(a: impl IntoDVec3, b: impl IntoDVec3, c: impl IntoDVec3, d: impl IntoDVec3) -> Sign {
+    orient3d::orient3d(a.into_dvec3(), b.into_dvec3(), c.into_dvec3(), d.into_dvec3())
+}
+
+/// [`orient3d`] that rejects a NaN or infinite coordinate with
+/// [`InputError::NonFinite`] naming the argument.
+#[inline]
+pub fn try_orient3d(
+    a: impl IntoDVec3,
+    b: impl IntoDVec3,
+    c: impl IntoDVec3,
+    d: impl IntoDVec3,
+) -> Result<Sign, InputError> {
+    let (a, b, c, d) = (a.into_dvec3(), b.into_dvec3(), c.into_dvec3(), d.into_dvec3());
+    check_finite3(&[("a", a), ("b", b), ("c", c), ("d", d)])?;
+    Ok(orient3d::orient3d(a, b, c, d))
+}
+
+/// Exact in-circle test: `Positive` when `d` lies inside the circle through
+/// `a, b, c` given counterclockwise, `Negative` outside, `Zero` on it. The
+/// sign flips when `a, b, c` are clockwise; it is `Zero`-free information only
+/// when they are not collinear.
+///
+/// It is the sign of `det[[ax-dx, ay-dy, |a-d|²], [bx-dx, ...], [cx-dx, ...]]`.
+/// Exact for every finite input; a NaN or infinite coordinate gives `Zero`
+/// (see [`try_incircle`]).
+///
+/// ```
+/// use exactray::{incircle, Sign};
+/// let (a, b, c) = ([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]);
+/// assert_eq!(incircle(a, b, c, [0.0, 0.0]), Sign::Positive);
+/// assert_eq!(incircle(a, b, c, [0.0, -1.0]), Sign::Zero);
+/// assert_eq!(incircle(a, b, c, [2.0, 0.0]), Sign::Negative);
+/// ```
+#[inline]
+pub fn incircle(
+    a: impl IntoDVec2,
+    b: impl IntoDVec2,
+    c: impl IntoDVec2,
+    d: impl IntoDVec2,
+) -> Sign {
+    incircle::incircle(a.into_dvec2(), b.into_dvec2(), c.into_dvec2(), d.into_dvec2())
+}
+
+/// [`incircle`] that rejects a NaN or infinite coordinate with
+/// [`InputError::NonFinite`] naming the argument.
+#[inline]
+pub fn try_incircle(
+    a: impl IntoDVec2,
+    b: impl IntoDVec2,
+    c: impl IntoDVec2,
+    d: impl IntoDVec2,
+) -> Result<Sign, InputError> {
+    let (a, b, c, d) = (a.into_dvec2(), b.into_dvec2(), c.into_dvec2(), d.into_dvec2());
+    check_finite2(&[("a", a), ("b", b), ("c", c), ("d", d)])?;
+    Ok(incircle::incircle(a, b, c, d))
+}
+
+/// Exact in-sphere test: `Positive` when `e` lies inside the sphere through
+/// `a, b, c, d` and `orient3d(a, b, c, d)` is `Positive`; `Negative` outside;
+/// `Zero` on the sphere. The sign flips with the orientation of `a, b, c, d`.
+///
+/// It is the sign of `-det[[a-e, |a-e|²], [b-e, |b-e|²], [c-e, |c-e|²], [d-e, |d-e|²]]`
+/// (CGAL `side_of_oriented_sphere`). Exact for every finite input; a NaN or
+/// infinite coordinate gives `Zero` (see [`try_insphere`]).
+///
+/// ```
+/// use exactray::{insphere, orient3d, Sign};
+/// let (a, b, c, d) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+/// assert_eq!(orient3d(a, b, c, d), Sign::Positive);
+/// assert_eq!(insphere(a, b, c, d, [0.25, 0.25, 0.25]), Sign::Positive);
+/// assert_eq!(insphere(a, b, c, d, [1.0, 1.0, 1.0]), Sign::Zero);
+/// assert_eq!(insphere(a, b, c, d, [2.0, 2.0, 2.0]), Sign::Negative);
+/// ```
+#[inline]
+pub fn insphere(
+    a: impl IntoDVec3,
+    b: impl IntoDVec3,
+    c: impl IntoDVec3,
+    d: impl IntoDVec3,
+    e: impl IntoDVec3,
+) -> Sign {
+    insphere::insphere(
+        a.into_dvec3(),
+        b.into_dvec3(),
+        c.into_dvec3(),
+        d.into_dvec3(),
+        e.into_dvec3(),
+    )
+}
+
+/// [`insphere`] that rejects a NaN or infinite coordinate with
+/// [`InputError::NonFinite`] naming the argument.
+#[inline]
+pub fn try_insphere(
+    a: impl IntoDVec3,
+    b: impl IntoDVec3,
+    c: impl IntoDVec3,
+    d: impl IntoDVec3,
+    e: impl IntoDVec3,
+) -> Result<Sign, InputError> {
+    let (a, b, c, d, e) =
+        (a.into_dvec3(), b.into_dvec3(), c.into_dvec3(), d.into_dvec3(), e.into_dvec3());
+    check_finite3(&[("a", a), ("b", b), ("c", c), ("d", d), ("e", e)])?;
+    Ok(insphere::insphere(a, b, c, d, e))
+}

@@ -1,0 +1,135 @@
+//! Exact oracle for the predicates, independent of the crate's arithmetic.
+//!
+//! Every finite f64 is exactly `m * 2^e` with integer `m`. All coordinates of
+//! one predicate call are brought to the smallest exponent among them, which
+//! multiplies every coordinate by the same power of two; the predicates are
+//! homogeneous polynomials in the coordinates, so the sign of the integer
+//! polynomial is the sign of the exact real one. Integers are `num_bigint`.
+//!
+//! Shared by `tests/`, `fuzz/` and the report via `#[path]`.
+#![allow(dead_code)]
+
+use num_bigint::BigInt;
+use num_traits::{Signed, Zero};
+
+/// `v = m * 2^e` exactly, for finite `v`.
+pub fn exact_parts(v: f64) -> (BigInt, i32) {
+    assert!(v.is_finite(), "the oracle takes finite values only");
+    let bits = v.to_bits();
+    let exp_field = ((bits >> 52) & 0x7ff) as i32;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp_field == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp_field - 1075)
+    };
+    let m = BigInt::from(m);
+    (if bits >> 63 == 1 { -m } else { m }, e)
+}
+
+/// The values as integers at their common (smallest) exponent.
+pub fn common_integers(values: &[f64]) -> Vec<BigInt> {
+    let parts: Vec<_> = values.iter().map(|&v| exact_parts(v)).collect();
+    let emin = parts.iter().map(|p| p.1).min().unwrap_or(0);
+    parts.into_iter().map(|(m, e)| m << ((e - emin) as usize)).collect()
+}
+
+fn sign(v: &BigInt) -> i8 {
+    if v.is_zero() {
+        0
+    } else if v.is_positive() {
+        1
+    } else {
+        -1
+    }
+}
+
+fn det2(a: &BigInt, b: &BigInt, c: &BigInt, d: &BigInt) -> BigInt {
+    a * d - b * c
+}
+
+fn det3(m: &[[BigInt; 3]; 3]) -> BigInt {
+    &m[0][0] * det2(&m[1][1], &m[1][2], &m[2][1], &m[2][2])
+        - &m[0][1] * det2(&m[1][0], &m[1][2], &m[2][0], &m[2][2])
+        + &m[0][2] * det2(&m[1][0], &m[1][1], &m[2][0], &m[2][1])
+}
+
+fn det4(m: &[[BigInt; 4]; 4]) -> BigInt {
+    let mut total = BigInt::zero();
+    for col in 0..4 {
+        let minor: [[BigInt; 3]; 3] = core::array::from_fn(|r| {
+            core::array::from_fn(|c| m[r + 1][if c < col { c } else { c + 1 }].clone())
+        });
+        let term = &m[0][col] * det3(&minor);
+        if col % 2 == 0 {
+            total += term;
+        } else {
+            total -= term;
+        }
+    }
+    total
+}
+
+/// Sign of `(b - a) x (c - a)`.
+pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> i8 {
+    let v = common_integers(&[a[0], a[1], b[0], b[1], c[0], c[1]]);
+    let (bx, by) = (&v[2] - &v[0], &v[3] - &v[1]);
+    let (cx, cy) = (&v[4] - &v[0], &v[5] - &v[1]);
+    sign(&det2(&bx, &by, &cx, &cy))
+}
+
+/// Sign of `det[b - a, c - a, d - a]` (CGAL's orientation).
+pub fn orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> i8 {
+    let v = common_integers(&[a, b, c, d].concat());
+    let row = |p: usize| -> [BigInt; 3] { core::array::from_fn(|k| &v[3 * p + k] - &v[k]) };
+    sign(&det3(&[row(1), row(2), row(3)]))
+}
+
+/// Sign of `det[[a-d, |a-d|^2], [b-d, |b-d|^2], [c-d, |c-d|^2]]`: positive
+/// when `d` is inside the circle through counterclockwise `a, b, c`.
+pub fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> i8 {
+    let v = common_integers(&[a, b, c, d].concat());
+    let row = |p: usize| -> [BigInt; 3] {
+        let x = &v[2 * p] - &v[6];
+        let y = &v[2 * p + 1] - &v[7];
+        let lift = &x * &x + &y * &y;
+        [x, y, lift]
+    };
+    sign(&det3(&[row(0), row(1), row(2)]))
+}
+
+/// Sign of `-det[[a-e, |a-e|^2], ..., [d-e, |d-e|^2]]`: positive when `e` is
+/// inside the sphere through `a, b, c, d` with `orient3d(a, b, c, d) > 0`.
+pub fn insphere(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3], e: [f64; 3]) -> i8 {
+    let v = common_integers(&[a, b, c, d, e].concat());
+    let row = |p: usize| -> [BigInt; 4] {
+        let x = &v[3 * p] - &v[12];
+        let y = &v[3 * p + 1] - &v[13];
+        let z = &v[3 * p + 2] - &v[14];
+        let lift = &x * &x + &y * &y + &z * &z;
+        [x, y, z, lift]
+    };
+    -sign(&det4(&[row(0), row(1), row(2), row(3)]))
+}
+
+/// `sign(orient3d(x0, x1, x2, p)) * sign(orient3d(x0, x1, x2, q))`: `1` same
+/// side, `-1` opposite sides, `0` on the plane or degenerate triangle.
+pub fn plane_side(x0: [f64; 3], x1: [f64; 3], x2: [f64; 3], p: [f64; 3], q: [f64; 3]) -> i8 {
+    orient3d(x0, x1, x2, p) * orient3d(x0, x1, x2, q)
+}
+
+#[cfg(test)]
+mod oracle_self_test {
+    use super::*;
+
+    #[test]
+    fn conventions() {
+        assert_eq!(orient2d([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]), 1);
+        assert_eq!(orient3d([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]), 1);
+        assert_eq!(incircle([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, 0.0]), 1);
+        let t = ([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+        assert_eq!(insphere(t.0, t.1, t.2, t.3, [0.25; 3]), 1);
+        assert_eq!(insphere(t.0, t.1, t.2, t.3, [1.0; 3]), 0);
+        assert_eq!(exact_parts(f64::from_bits(1)), (BigInt::from(1), -1074));
+    }
+}

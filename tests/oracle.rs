@@ -1,0 +1,2 @@
+//! Self-test of the exact oracle's conventions.
+mod common;
