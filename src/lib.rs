@@ -25,9 +25,13 @@ extern crate alloc;
 extern crate std;
 
 pub mod error;
+pub mod hard_inputs;
+pub mod inputs;
 pub mod point;
 pub mod predicates;
 pub mod sign;
+#[cfg(feature = "proptest")]
+pub mod strategies;
 
 pub use error::InputError;
 pub use point::{IntoDVec2, IntoDVec3};

@@ -1,0 +1,1 @@
+//! Deterministic generators of hard predicate inputs (being written).

@@ -1,0 +1,1 @@
+//! Predicate input types, with `Arbitrary` under the `arbitrary` feature (being written).

@@ -1,0 +1,1 @@
+//! proptest strategies for hard inputs (being written).
