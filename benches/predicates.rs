@@ -1,0 +1,2 @@
+//! Criterion benchmarks of the predicates (being written).
+fn main() {}

@@ -1,0 +1,2 @@
+//! The speed-against-error report (being written).
+fn main() {}
