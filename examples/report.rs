@@ -1,2 +1,129 @@
-//! The speed-against-error report (being written).
-fn main() {}
+//! The speed-against-error report (see REPORT.md in the project notes):
+//! every routine family of the crate beside its peers, on ordinary and hard
+//! inputs, timed and checked against the exact answer.
+//!
+//! ```text
+//! cargo run --release --example report [-- --quick] [-- --only orient3d,incircle]
+//! ```
+//! Prints a table (progress on stderr) and writes `target/report/report.md`,
+//! `report.json` and one `<family>.svg` per family.
+//!
+//! To add a family: a module under `examples/report/` and a line in
+//! [`FAMILIES`]. (A crate root looks for its modules beside itself, hence the
+//! `#[path]`s.)
+
+#[path = "../tests/common/oracle.rs"]
+mod oracle;
+
+#[path = "report/framework.rs"]
+mod framework;
+#[path = "report/output.rs"]
+mod output;
+#[path = "report/plot.rs"]
+mod plot;
+#[path = "report/signs.rs"]
+mod signs;
+#[path = "report/targets.rs"]
+mod targets;
+
+#[path = "report/incircle.rs"]
+mod incircle;
+#[path = "report/insphere.rs"]
+mod insphere;
+#[path = "report/orient2d.rs"]
+mod orient2d;
+#[path = "report/orient3d.rs"]
+mod orient3d;
+#[path = "report/plane_side.rs"]
+mod plane_side;
+
+use framework::{Config, Row};
+use std::time::Instant;
+
+/// Measures one family: its rows.
+type Family = fn(&Config) -> Vec<Row>;
+
+/// Every family, in report order.
+const FAMILIES: &[(&str, Family)] = &[
+    ("orient2d", |cfg| orient2d::family().run(cfg)),
+    ("orient3d", |cfg| orient3d::family().run(cfg)),
+    ("incircle", |cfg| incircle::family().run(cfg)),
+    ("insphere", |cfg| insphere::family().run(cfg)),
+    ("plane_side", |cfg| plane_side::family().run(cfg)),
+];
+
+fn main() -> std::io::Result<()> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let quick = args.iter().any(|a| a == "--quick");
+    let only: Option<Vec<String>> = args
+        .iter()
+        .position(|a| a == "--only")
+        .and_then(|i| args.get(i + 1))
+        .map(|list| list.split(',').map(str::to_string).collect());
+    if let Some(unknown) = args
+        .iter()
+        .find(|a| a.starts_with("--") && *a != "--quick" && *a != "--only")
+    {
+        eprintln!("unknown option {unknown}; options: --quick, --only family[,family...]");
+        std::process::exit(2);
+    }
+    let cfg = Config::new(quick);
+    let families: Vec<_> = FAMILIES
+        .iter()
+        .filter(|(name, _)| only.as_ref().is_none_or(|o| o.iter().any(|n| n == name)))
+        .collect();
+
+    let start = Instant::now();
+    let mut rows = Vec::new();
+    for (k, (name, run)) in families.iter().enumerate() {
+        let t = Instant::now();
+        let new = run(&cfg);
+        let wrong = new
+            .iter()
+            .filter(|r| r.method == "exactray")
+            .map(|r| r.errors)
+            .sum::<u64>();
+        eprintln!(
+            "[{}/{}] {name}: {} rows in {:.1} s (exactray wrong answers: {wrong})",
+            k + 1,
+            families.len(),
+            new.len(),
+            t.elapsed().as_secs_f64()
+        );
+        rows.extend(new);
+    }
+
+    let table = output::table(&rows);
+    let (targets, met, total) = targets::check(&rows);
+    println!("{table}");
+    println!("Targets met: {met} of {total}\n\n{targets}");
+
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/report");
+    std::fs::create_dir_all(&dir)?;
+    let mut md = format!(
+        "# exactray: speed against error\n\n{} run: {} cases checked against the exact answer per family and inputs; \
+         ns/op is the median of {} timed loops over {} cases. `vs naive` and `vs robust` divide a row's time by \
+         that method's on the same family and inputs, measured in the same run.\n\n{table}\n\
+         ## Targets\n\n{met} of {total} met.\n\n{targets}\n## Plots\n\n",
+        if quick { "Quick" } else { "Full" },
+        cfg.cases,
+        cfg.reps,
+        cfg.working_set,
+    );
+    for (name, _) in &families {
+        let family_rows: Vec<&Row> = rows.iter().filter(|r| r.family == *name).collect();
+        std::fs::write(
+            dir.join(format!("{name}.svg")),
+            plot::svg(name, &family_rows),
+        )?;
+        md += &format!("![{name}]({name}.svg)\n\n");
+    }
+    std::fs::write(dir.join("report.md"), md)?;
+    std::fs::write(dir.join("report.json"), output::json(&rows))?;
+    eprintln!(
+        "wrote {} in {:.1} s",
+        dir.display(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
+}

@@ -1,1 +1,176 @@
-//! proptest strategies for hard inputs (being written).
+//! proptest strategies for hard predicate inputs, for users' property tests.
+//!
+//! The per-family strategies ([`orient2d_inputs`], ...) draw a seed and run
+//! the deterministic generators of [`hard_inputs`](crate::hard_inputs) for an
+//! [`InputClass`]; [`finite_f64`] and the `finite_*` point strategies cover
+//! every finite `f64` bit pattern. The thin wrappers ([`degenerate_orient2d`],
+//! [`near_degenerate_incircle`], ...) name the classes most tests want.
+//!
+//! Generated cases do not shrink: a smaller seed is an unrelated case, not a
+//! simpler one, so shrinking would only spend time.
+//!
+//! ```
+//! use exactray::hard_inputs::InputClass;
+//! use exactray::strategies::{any_class, finite_dvec2, orient2d_inputs};
+//! use exactray::{orient2d, Sign};
+//! use proptest::prelude::*;
+//!
+//! proptest! {
+//!     #![proptest_config(ProptestConfig::with_cases(64))]
+//!     // In a test file each property also gets `#[test]`.
+//!     // An odd permutation of the points negates the orientation.
+//!     fn swap_negates([a, b, c] in any_class().prop_flat_map(orient2d_inputs)) {
+//!         prop_assert_eq!(orient2d(a, b, c), -orient2d(b, a, c));
+//!     }
+//!
+//!     // Degenerate cases are collinear by construction.
+//!     fn degenerate_is_zero([a, b, c] in orient2d_inputs(InputClass::Degenerate)) {
+//!         prop_assert_eq!(orient2d(a, b, c), Sign::Zero);
+//!     }
+//!
+//!     // Any three finite points: the answer is one of the signs, never a panic.
+//!     fn finite_never_panics(a in finite_dvec2(), b in finite_dvec2(), c in finite_dvec2()) {
+//!         let _ = orient2d(a, b, c);
+//!     }
+//! }
+//! # swap_negates();
+//! # degenerate_is_zero();
+//! # finite_never_panics();
+//! ```
+
+use crate::hard_inputs::{
+    InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
+    plane_side_case,
+};
+use crate::inputs::finite_f64_from_bits;
+use glam::{DVec2, DVec3};
+use proptest::prelude::*;
+
+fn seeded<T: core::fmt::Debug>(
+    class: InputClass,
+    generate: fn(InputClass, &mut SplitMix64) -> T,
+) -> impl Strategy<Value = T> {
+    any::<u64>()
+        .prop_map(move |seed| generate(class, &mut SplitMix64::new(seed)))
+        .no_shrink()
+}
+
+/// Any [`InputClass`], uniformly; combine with a family strategy through
+/// `prop_flat_map` to cover every class in one property.
+pub fn any_class() -> impl Strategy<Value = InputClass> {
+    proptest::sample::select(&InputClass::ALL[..])
+}
+
+/// Every finite `f64`, each bit pattern equally likely: subnormals, both
+/// zeros and the extremes included, so most values are far from 1 (see
+/// [`finite_f64_from_bits`] for where the non-finite patterns go). Shrinks
+/// towards `0.0`.
+pub fn finite_f64() -> impl Strategy<Value = f64> {
+    any::<u64>().prop_map(finite_f64_from_bits)
+}
+
+/// A `DVec2` with coordinates from [`finite_f64`].
+pub fn finite_dvec2() -> impl Strategy<Value = DVec2> {
+    (finite_f64(), finite_f64()).prop_map(|(x, y)| DVec2::new(x, y))
+}
+
+/// A `DVec3` with coordinates from [`finite_f64`].
+pub fn finite_dvec3() -> impl Strategy<Value = DVec3> {
+    (finite_f64(), finite_f64(), finite_f64()).prop_map(|(x, y, z)| DVec3::new(x, y, z))
+}
+
+/// `orient2d` arguments `[a, b, c]` of the class (see
+/// [`orient2d_case`](crate::hard_inputs::orient2d_case)).
+pub fn orient2d_inputs(class: InputClass) -> impl Strategy<Value = [DVec2; 3]> {
+    seeded(class, orient2d_case)
+}
+
+/// `orient3d` arguments `[a, b, c, d]` of the class (see
+/// [`orient3d_case`](crate::hard_inputs::orient3d_case)).
+pub fn orient3d_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 4]> {
+    seeded(class, orient3d_case)
+}
+
+/// `incircle` arguments `[a, b, c, d]` of the class (see
+/// [`incircle_case`](crate::hard_inputs::incircle_case)).
+pub fn incircle_inputs(class: InputClass) -> impl Strategy<Value = [DVec2; 4]> {
+    seeded(class, incircle_case)
+}
+
+/// `insphere` arguments `[a, b, c, d, e]` of the class (see
+/// [`insphere_case`](crate::hard_inputs::insphere_case)).
+pub fn insphere_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 5]> {
+    seeded(class, insphere_case)
+}
+
+/// `same_side` / `side_of_plane` arguments `[x0, x1, x2, p, q]` of the class
+/// (see [`plane_side_case`](crate::hard_inputs::plane_side_case)).
+pub fn plane_side_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 5]> {
+    seeded(class, plane_side_case)
+}
+
+/// Exactly collinear `orient2d` arguments: the exact answer is `Zero`.
+pub fn degenerate_orient2d() -> impl Strategy<Value = [DVec2; 3]> {
+    orient2d_inputs(InputClass::Degenerate)
+}
+
+/// Exactly coplanar `orient3d` arguments: the exact answer is `Zero`.
+pub fn degenerate_orient3d() -> impl Strategy<Value = [DVec3; 4]> {
+    orient3d_inputs(InputClass::Degenerate)
+}
+
+/// Exactly cocircular `incircle` arguments: the exact answer is `Zero`.
+pub fn degenerate_incircle() -> impl Strategy<Value = [DVec2; 4]> {
+    incircle_inputs(InputClass::Degenerate)
+}
+
+/// Exactly cospherical `insphere` arguments: the exact answer is `Zero`.
+pub fn degenerate_insphere() -> impl Strategy<Value = [DVec3; 5]> {
+    insphere_inputs(InputClass::Degenerate)
+}
+
+/// Nearly collinear `orient2d` arguments, where a plain `f64` determinant
+/// often gets the sign wrong.
+pub fn near_degenerate_orient2d() -> impl Strategy<Value = [DVec2; 3]> {
+    orient2d_inputs(InputClass::NearDegenerate)
+}
+
+/// Nearly coplanar `orient3d` arguments.
+pub fn near_degenerate_orient3d() -> impl Strategy<Value = [DVec3; 4]> {
+    orient3d_inputs(InputClass::NearDegenerate)
+}
+
+/// Nearly cocircular `incircle` arguments.
+pub fn near_degenerate_incircle() -> impl Strategy<Value = [DVec2; 4]> {
+    incircle_inputs(InputClass::NearDegenerate)
+}
+
+/// Nearly cospherical `insphere` arguments.
+pub fn near_degenerate_insphere() -> impl Strategy<Value = [DVec3; 5]> {
+    insphere_inputs(InputClass::NearDegenerate)
+}
+
+/// `orient2d` arguments from every class, each equally likely.
+pub fn hard_orient2d() -> impl Strategy<Value = [DVec2; 3]> {
+    any_class().prop_flat_map(orient2d_inputs)
+}
+
+/// `orient3d` arguments from every class, each equally likely.
+pub fn hard_orient3d() -> impl Strategy<Value = [DVec3; 4]> {
+    any_class().prop_flat_map(orient3d_inputs)
+}
+
+/// `incircle` arguments from every class, each equally likely.
+pub fn hard_incircle() -> impl Strategy<Value = [DVec2; 4]> {
+    any_class().prop_flat_map(incircle_inputs)
+}
+
+/// `insphere` arguments from every class, each equally likely.
+pub fn hard_insphere() -> impl Strategy<Value = [DVec3; 5]> {
+    any_class().prop_flat_map(insphere_inputs)
+}
+
+/// Plane-side arguments from every class, each equally likely.
+pub fn hard_plane_side() -> impl Strategy<Value = [DVec3; 5]> {
+    any_class().prop_flat_map(plane_side_inputs)
+}

@@ -1,8 +1,197 @@
-//! insphere: interim implementation (being replaced by the stage ladder).
+//! insphere: the sign of `-det[[a-e, |a-e|^2], ..., [d-e, |d-e|^2]]`,
+//! positive when `e` is inside the sphere through `a, b, c, d` with
+//! `orient3d(a, b, c, d) > 0` (CGAL's convention, minus Shewchuk's).
+//! Exact for every finite input.
+//!
+//! Stage ladder (see the [module docs](super)): filtered, small-integer
+//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+
+use super::grain::{Grain, TINY, pow2, scale_pow2};
+use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec3;
 
+/// Shewchuk's `isperrboundA = (16 + 224 eps) eps`, `eps = 2^-53`: with no
+/// underflow, `|det_computed - det| <= A * permanent` (Shewchuk 1997,
+/// insphere stage A), plus `2^-60` relative for the underflow that the
+/// difference guard below admits.
+const A: f64 = (16.0 + 224.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0) + GUARD_RELATIVE;
+
+/// The filter on unscaled input runs only when every coordinate difference
+/// is 0 or at least `2^-200`: every product of up to five differences is
+/// then 0 or at least `2^-1000`, and a product that still underflows (after
+/// a minor cancelled) is off by at most `2^-1075`, below `2^-75` of the
+/// permanent term it belongs to. Fewer than 32 such terms: `2^-60`
+/// relative covers them.
+const GUARD_MIN_DIFF: f64 = pow2(-200);
+const GUARD_RELATIVE: f64 = pow2(-60);
+
+/// Span of the small-integer stage (one grain for all axes, since the lift
+/// mixes them): coordinates below `2^60`, differences below `2^61` (one
+/// limb), 2x2 minors below `2^123` and lifts below `2^124` (two), 3x3
+/// minors below `2^186` (three), the determinant below `2^312` (five).
+const SMALL_SPAN: i32 = 60;
+
+/// Span up to which Shewchuk's adaptive stages are exact once scaled below
+/// 1: non-zero values of degree `j <= 5` are at least `2^-900`.
+const ADAPTIVE_SPAN: i32 = 180;
+
+/// Absolute error of the filter on inputs scaled below 1 (no difference
+/// guard there). Differences are below 2, 2x2 minors below 8, 3x3 minors
+/// below 48, lifts below 12. Underflowed products (each off by `2^-1075`):
+/// 12 in 2x2 minors (then times a z below 2 and a lift below 12), 12 in 3x3
+/// minors (times a lift), 12 squares (times a 3x3 minor below 48), 4 final:
+/// about `1012 * 2^-1075 < 2^-1065`. Scaling error: differences off by
+/// `2^-1073`, the determinant's derivative in one of them below 768; twelve
+/// of them: `9216 * 2^-1073 < 2^-1059`. `2^-1050` leaves a factor over 300.
+const SCALED_SLACK: f64 = 16777216.0 * TINY;
+
+#[inline(always)]
 pub(super) fn insphere(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
-    let p = |v: DVec3| robust::Coord3D { x: v.x, y: v.y, z: v.z };
-    -Sign::of_f64(robust::insphere(p(a), p(b), p(c), p(d), p(e)))
+    match filtered(&[a, b, c, d, e], None) {
+        Some(s) => s,
+        None => exact(a, b, c, d, e),
+    }
+}
+
+/// Stage 1 (and 4, on scaled input with `Some(slack)`): Shewchuk's stage A
+/// determinant, certified by a forward error bound. With `None`, the
+/// difference guard makes the bound hold under underflow instead.
+#[inline(always)]
+fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Option<Sign> {
+    let e = p[4];
+    let (ae, be, ce, de) = (p[0] - e, p[1] - e, p[2] - e, p[3] - e);
+    let slack = match scaled_slack {
+        None => {
+            let m = ae
+                .abs()
+                .min(be.abs())
+                .min(ce.abs())
+                .min(de.abs())
+                .min_element();
+            if m < GUARD_MIN_DIFF || m.is_nan() {
+                return None;
+            }
+            0.0
+        }
+        Some(s) => s,
+    };
+    let ab = ae.x * be.y - be.x * ae.y;
+    let bc = be.x * ce.y - ce.x * be.y;
+    let cd = ce.x * de.y - de.x * ce.y;
+    let da = de.x * ae.y - ae.x * de.y;
+    let ac = ae.x * ce.y - ce.x * ae.y;
+    let bd = be.x * de.y - de.x * be.y;
+    let abc = ae.z * bc - be.z * ac + ce.z * ab;
+    let bcd = be.z * cd - ce.z * bd + de.z * bc;
+    let cda = ce.z * da + de.z * ac + ae.z * cd;
+    let dab = de.z * ab + ae.z * bd + be.z * da;
+    let (al, bl, cl, dl) = (
+        ae.length_squared(),
+        be.length_squared(),
+        ce.length_squared(),
+        de.length_squared(),
+    );
+    let det = (dl * abc - cl * dab) + (bl * cda - al * bcd);
+
+    let pm = |u: DVec3, v: DVec3| (u.x * v.y).abs() + (v.x * u.y).abs();
+    let (abp, bcp, cdp, dap, acp, bdp) = (
+        pm(ae, be),
+        pm(be, ce),
+        pm(ce, de),
+        pm(de, ae),
+        pm(ae, ce),
+        pm(be, de),
+    );
+    let (az, bz, cz, dz) = (ae.z.abs(), be.z.abs(), ce.z.abs(), de.z.abs());
+    let permanent = (cdp * bz + bdp * cz + bcp * dz) * al
+        + (dap * cz + acp * dz + cdp * az) * bl
+        + (abp * dz + bdp * az + dap * bz) * cl
+        + (bcp * az + acp * bz + abp * cz) * dl;
+    let bound = A * permanent + slack;
+    // Shewchuk's determinant is positive for "inside" under his opposite
+    // orientation convention: ours is its negation.
+    if det > bound {
+        Some(Sign::Negative)
+    } else if -det > bound {
+        Some(Sign::Positive)
+    } else {
+        None
+    }
+}
+
+/// Stages 2 to 5, for the few inputs the filter cannot certify.
+#[cold]
+#[inline(never)]
+fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
+    let points = [a, b, c, d, e];
+    if !points.iter().all(|p| p.is_finite()) {
+        return Sign::Zero;
+    }
+    let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
+    let grain = Grain::of(&coords);
+    if grain.all_zero() {
+        return Sign::Zero;
+    }
+    if grain.span() <= SMALL_SPAN {
+        return integer::<1, 2, 3, 5>(&points, grain.lo_min);
+    }
+    let k = grain.unit_scale();
+    let s = points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)));
+    if grain.span() <= ADAPTIVE_SPAN {
+        let p = |v: DVec3| robust::Coord3D {
+            x: v.x,
+            y: v.y,
+            z: v.z,
+        };
+        return -Sign::of_f64(robust::insphere(
+            p(s[0]),
+            p(s[1]),
+            p(s[2]),
+            p(s[3]),
+            p(s[4]),
+        ));
+    }
+    if let Some(sign) = filtered(&s, Some(SCALED_SLACK)) {
+        return sign;
+    }
+    integer::<34, 67, 100, 166>(&points, grain.lo_min)
+}
+
+/// Stages 2 and 5: coordinates as integers at the finest bit `lo`, with
+/// `D`-limb differences, `M`-limb 2x2 minors and lifts, `T`-limb 3x3
+/// minors, an `R`-limb result. Stage 2: `<1, 2, 3, 5>` (see `SMALL_SPAN`).
+/// Stage 5: `<34, 67, 100, 166>`: differences below `2^2099`, 2x2 minors
+/// and lifts below `2^4200`, 3x3 minors below `2^6300`, the determinant
+/// below `2^10502`.
+fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
+    p: &[DVec3; 5],
+    lo: i32,
+) -> Sign {
+    let int = |v: DVec3| [v.x, v.y, v.z].map(|x| Wide::<D>::from_f64(x, lo));
+    let e = int(p[4]);
+    let rel = |v: DVec3| {
+        let q = int(v);
+        [q[0].sub(&e[0]), q[1].sub(&e[1]), q[2].sub(&e[2])]
+    };
+    let r = [rel(p[0]), rel(p[1]), rel(p[2]), rel(p[3])];
+    let m2 =
+        |i: usize, j: usize| Wide::<M>::mul(&r[i][0], &r[j][1]).sub(&Wide::mul(&r[j][0], &r[i][1]));
+    // 3x3 minor of rows i, j, k expanded along z.
+    let m3 = |i: usize, j: usize, k: usize| {
+        Wide::<T>::mul(&r[i][2], &m2(j, k))
+            .add(&Wide::mul(&r[j][2], &m2(k, i)))
+            .add(&Wide::mul(&r[k][2], &m2(i, j)))
+    };
+    let lift = |i: usize| {
+        Wide::<M>::mul(&r[i][0], &r[i][0])
+            .add(&Wide::mul(&r[i][1], &r[i][1]))
+            .add(&Wide::mul(&r[i][2], &r[i][2]))
+    };
+    // det[[r_i, lift_i]] expanded along the lift column; we return minus it.
+    let det = Wide::<R>::mul(&lift(1), &m3(0, 2, 3))
+        .add(&Wide::mul(&lift(3), &m3(0, 1, 2)))
+        .sub(&Wide::mul(&lift(0), &m3(1, 2, 3)))
+        .sub(&Wide::mul(&lift(2), &m3(0, 1, 3)));
+    -det.sign()
 }

@@ -55,12 +55,13 @@
 //! 18 (1997); A. Meyer and S. Pion, "FPG: A code generator for fast and
 //! certified geometric predicates", RNC 2008.
 
-mod exact_stage;
+mod grain;
 mod incircle;
 mod insphere;
 mod orient2d;
 mod orient3d;
 pub mod plane_side;
+mod wide;
 
 use crate::error::InputError;
 use crate::point::{IntoDVec2, IntoDVec3};
@@ -101,10 +102,9 @@ pub(crate) fn check_finite3(points: &[(&'static str, DVec3)]) -> Result<(), Inpu
 /// use exactray::{orient2d, Sign};
 /// use glam::DVec2;
 /// assert_eq!(orient2d(DVec2::ZERO, DVec2::X, DVec2::Y), Sign::Positive);
-/// // 0.1 + 0.2 != 0.3 in f64: these three points are not collinear, and the
-/// // exact predicate says which side the third one is on.
+/// // Points on the line y = x are exactly collinear, whatever their rounding.
 /// let s = orient2d(DVec2::new(0.1, 0.1), DVec2::new(0.2, 0.2), DVec2::new(0.3, 0.3));
-/// assert_eq!(s, Sign::Negative);
+/// assert_eq!(s, Sign::Zero);
 /// ```
 #[inline]
 pub fn orient2d(a: impl IntoDVec2, b: impl IntoDVec2, c: impl IntoDVec2) -> Sign {
@@ -138,8 +138,18 @@ pub fn try_orient2d(
 /// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(0.3, 0.7, 0.0)), Sign::Zero);
 /// ```
 #[inline]
-pub fn orient3d(a: impl IntoDVec3, b: impl IntoDVec3, c: impl IntoDVec3, d: impl IntoDVec3) -> Sign {
-    orient3d::orient3d(a.into_dvec3(), b.into_dvec3(), c.into_dvec3(), d.into_dvec3())
+pub fn orient3d(
+    a: impl IntoDVec3,
+    b: impl IntoDVec3,
+    c: impl IntoDVec3,
+    d: impl IntoDVec3,
+) -> Sign {
+    orient3d::orient3d(
+        a.into_dvec3(),
+        b.into_dvec3(),
+        c.into_dvec3(),
+        d.into_dvec3(),
+    )
 }
 
 /// [`orient3d`] that rejects a NaN or infinite coordinate with
@@ -151,7 +161,12 @@ pub fn try_orient3d(
     c: impl IntoDVec3,
     d: impl IntoDVec3,
 ) -> Result<Sign, InputError> {
-    let (a, b, c, d) = (a.into_dvec3(), b.into_dvec3(), c.into_dvec3(), d.into_dvec3());
+    let (a, b, c, d) = (
+        a.into_dvec3(),
+        b.into_dvec3(),
+        c.into_dvec3(),
+        d.into_dvec3(),
+    );
     check_finite3(&[("a", a), ("b", b), ("c", c), ("d", d)])?;
     Ok(orient3d::orient3d(a, b, c, d))
 }
@@ -179,7 +194,12 @@ pub fn incircle(
     c: impl IntoDVec2,
     d: impl IntoDVec2,
 ) -> Sign {
-    incircle::incircle(a.into_dvec2(), b.into_dvec2(), c.into_dvec2(), d.into_dvec2())
+    incircle::incircle(
+        a.into_dvec2(),
+        b.into_dvec2(),
+        c.into_dvec2(),
+        d.into_dvec2(),
+    )
 }
 
 /// [`incircle`] that rejects a NaN or infinite coordinate with
@@ -191,7 +211,12 @@ pub fn try_incircle(
     c: impl IntoDVec2,
     d: impl IntoDVec2,
 ) -> Result<Sign, InputError> {
-    let (a, b, c, d) = (a.into_dvec2(), b.into_dvec2(), c.into_dvec2(), d.into_dvec2());
+    let (a, b, c, d) = (
+        a.into_dvec2(),
+        b.into_dvec2(),
+        c.into_dvec2(),
+        d.into_dvec2(),
+    );
     check_finite2(&[("a", a), ("b", b), ("c", c), ("d", d)])?;
     Ok(incircle::incircle(a, b, c, d))
 }
@@ -239,8 +264,13 @@ pub fn try_insphere(
     d: impl IntoDVec3,
     e: impl IntoDVec3,
 ) -> Result<Sign, InputError> {
-    let (a, b, c, d, e) =
-        (a.into_dvec3(), b.into_dvec3(), c.into_dvec3(), d.into_dvec3(), e.into_dvec3());
+    let (a, b, c, d, e) = (
+        a.into_dvec3(),
+        b.into_dvec3(),
+        c.into_dvec3(),
+        d.into_dvec3(),
+        e.into_dvec3(),
+    );
     check_finite3(&[("a", a), ("b", b), ("c", c), ("d", d), ("e", e)])?;
     Ok(insphere::insphere(a, b, c, d, e))
 }

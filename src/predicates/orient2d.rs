@@ -1,8 +1,120 @@
-//! orient2d: interim implementation (being replaced by the stage ladder).
+//! orient2d: the sign of `(b - a) x (c - a)`, exact for every finite input.
+//!
+//! Stage ladder (see the [module docs](super)): filtered, small-integer
+//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+
+use super::grain::{Grain, TINY, scale_pow2, to_integer_i64};
+use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec2;
 
+/// Shewchuk's `ccwerrboundA = (3 + 16 eps) eps`, `eps = 2^-53`: with no
+/// underflow, `|det_computed - det| <= A * (|detleft| + |detright|)`
+/// (Shewchuk 1997, section 4.3, orient2d stage A).
+const A: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
+
+/// Absolute term for underflow. A product that lands below `2^-1022` is off
+/// by at most `2^-1075` instead of relatively; there are two products, and
+/// the rounding of `A * detsum` itself can lose another `2^-1075`: in all
+/// `3 * 2^-1075 < 2^-1073`; `2^-1071` leaves a factor 4 to spare. Overflow
+/// needs no term: it makes `detsum` infinite (or the determinant NaN) and
+/// the comparisons fail.
+const UNDERFLOW_SLACK: f64 = 8.0 * TINY;
+
+/// Span (bits between the finest and coarsest set bit, per axis) up to which
+/// the integer stage fits: coordinates are integers below `2^62`, their
+/// differences below `2^63` (an `i64`), the products below `2^126` and the
+/// determinant below `2^127` (an `i128`).
+const SMALL_SPAN: i32 = 62;
+
+/// Span up to which Shewchuk's adaptive stages are exact after scaling each
+/// axis by a power of two so its largest coordinate is below 1: every value
+/// of degree `j <= 2` they form is then a multiple of `2^(-j * span)`, and a
+/// non-zero one is at least `2^-900`, so no step underflows (with 2^-100 to
+/// spare for the error-bound products) and none overflows (all below 2^4).
+const ADAPTIVE_SPAN: i32 = 450;
+
+/// Extra absolute error of the scaled filter: each scaled coordinate is off
+/// by at most `2^-1074` (see `scale_pow2`), each difference by `2^-1073`,
+/// and with differences below 2 the determinant moves by at most
+/// `2 * 2 * 2 * 2^-1073 = 2^-1070`; `2^-1068` leaves a factor 4.
+const SCALED_SLACK: f64 = 64.0 * TINY;
+
+#[inline(always)]
 pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Sign {
-    let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
-    Sign::of_f64(robust::orient2d(p(a), p(b), p(c)))
+    match filtered(a, b, c, 0.0) {
+        Some(s) => s,
+        None => exact(a, b, c),
+    }
+}
+
+/// Stage 1: the `f64` determinant, certified by a forward error bound.
+/// `None` when the bound cannot certify the sign (including non-finite input).
+#[inline(always)]
+fn filtered(a: DVec2, b: DVec2, c: DVec2, extra_slack: f64) -> Option<Sign> {
+    let detleft = (a.x - c.x) * (b.y - c.y);
+    let detright = (a.y - c.y) * (b.x - c.x);
+    let det = detleft - detright;
+    let bound = A * (detleft.abs() + detright.abs()) + (UNDERFLOW_SLACK + extra_slack);
+    if det > bound {
+        Some(Sign::Positive)
+    } else if -det > bound {
+        Some(Sign::Negative)
+    } else {
+        None
+    }
+}
+
+/// Stages 2 to 5, for the few inputs the filter cannot certify.
+#[cold]
+#[inline(never)]
+fn exact(a: DVec2, b: DVec2, c: DVec2) -> Sign {
+    if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+        return Sign::Zero;
+    }
+    let gx = Grain::of(&[a.x, b.x, c.x]);
+    let gy = Grain::of(&[a.y, b.y, c.y]);
+    if gx.all_zero() || gy.all_zero() {
+        return Sign::Zero;
+    }
+    let span = gx.span().max(gy.span());
+    if span <= SMALL_SPAN {
+        return small_integer(a, b, c, gx.lo_min, gy.lo_min);
+    }
+    let scaled = |p: DVec2| {
+        DVec2::new(
+            scale_pow2(p.x, gx.unit_scale()),
+            scale_pow2(p.y, gy.unit_scale()),
+        )
+    };
+    let (sa, sb, sc) = (scaled(a), scaled(b), scaled(c));
+    if span <= ADAPTIVE_SPAN {
+        let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
+        return Sign::of_f64(robust::orient2d(p(sa), p(sb), p(sc)));
+    }
+    if let Some(s) = filtered(sa, sb, sc, SCALED_SLACK) {
+        return s;
+    }
+    big_integer(a, b, c, gx.lo_min, gy.lo_min)
+}
+
+/// Stage 2: each axis as integers at its finest bit (`span <= 62`).
+fn small_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
+    let i = |p: DVec2| (to_integer_i64(p.x, lox), to_integer_i64(p.y, loy));
+    let ((ax, ay), (bx, by), (cx, cy)) = (i(a), i(b), i(c));
+    let det = (bx - ax) as i128 * (cy - ay) as i128 - (by - ay) as i128 * (cx - ax) as i128;
+    Sign::from_i8(det.signum() as i8)
+}
+
+/// Stage 5: each axis as integers at its finest bit, whatever the span.
+/// Coordinates are below `2^2098` (a finite `f64` over its finest possible
+/// bit `2^-1074`), differences below `2^2099` (34 limbs) and the
+/// determinant below `2^4199` (67 limbs).
+fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
+    type D = Wide<34>;
+    let dx = |p: DVec2, q: DVec2| D::from_f64(p.x, lox).sub(&D::from_f64(q.x, lox));
+    let dy = |p: DVec2, q: DVec2| D::from_f64(p.y, loy).sub(&D::from_f64(q.y, loy));
+    let left = Wide::<67>::mul(&dx(b, a), &dy(c, a));
+    let right = Wide::<67>::mul(&dy(b, a), &dx(c, a));
+    left.sub(&right).sign()
 }

@@ -1,8 +1,150 @@
-//! orient3d: interim implementation (being replaced by the stage ladder).
+//! orient3d: the sign of `det[b - a, c - a, d - a]`, exact for every finite
+//! input (CGAL's convention, minus Shewchuk's).
+//!
+//! Stage ladder (see the [module docs](super)): filtered, small-integer
+//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+
+use super::grain::{Grain, TINY, scale_pow2};
+use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec3;
 
+/// Shewchuk's `o3derrboundA = (7 + 56 eps) eps`, `eps = 2^-53`: with no
+/// underflow, `|det_computed - det| <= A * permanent` (Shewchuk 1997,
+/// section 4.3; our determinant is his with rows relabelled, the same
+/// operations on the same kind of operands).
+const A: f64 = (7.0 + 56.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
+
+/// Underflow, per unit of `|Bz| + |Cz| + |Dz|`: a 2x2-minor product that
+/// lands below `2^-1022` is off by up to `2^-1075` absolutely; two of them
+/// per minor, then multiplied by that row's z: `2 * 2^-1075 * |z|`, so
+/// `2^-1074` per unit of z; `2^-1073` leaves a factor 2.
+const Z_SLACK: f64 = 2.0 * TINY;
+
+/// Underflow, absolute: the three final products (`3 * 2^-1075`), the
+/// rounding of `A * permanent` and of `Z_SLACK * sum` (`2^-1075` each):
+/// `5 * 2^-1075 < 2^-1072`; `2^-1071` leaves a factor 2.
+const UNDERFLOW_SLACK: f64 = 8.0 * TINY;
+
+/// Span (per axis) of the small-integer stage: coordinates below `2^61`,
+/// differences below `2^62` (one limb), 2x2 minors below `2^125` (two),
+/// the determinant below `3 * 2^187 < 2^189` (three).
+const SMALL_SPAN: i32 = 61;
+
+/// Span (per axis) up to which Shewchuk's adaptive stages are exact once
+/// each axis is scaled below 1: every non-zero value of degree `j <= 3`
+/// they form is a multiple of `2^(-j * span)`, hence at least `2^-900`, so
+/// nothing underflows (2^-100 to spare for the error-bound products).
+const ADAPTIVE_SPAN: i32 = 300;
+
+/// Extra absolute error of the scaled filter: scaled coordinates are off by
+/// at most `2^-1074`, differences (below 2) by `2^-1073`; each of the six
+/// triple products moves by at most `3 * 4 * 2^-1073`, in all
+/// `72 * 2^-1073 < 2^-1066`. `2^-1064` leaves a factor 4.
+const SCALED_SLACK: f64 = 1024.0 * TINY;
+
+#[inline(always)]
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
-    let p = |v: DVec3| robust::Coord3D { x: v.x, y: v.y, z: v.z };
-    -Sign::of_f64(robust::orient3d(p(a), p(b), p(c), p(d)))
+    match filtered(a, b, c, d, 0.0) {
+        Some(s) => s,
+        None => exact(a, b, c, d),
+    }
+}
+
+/// Stage 1: the `f64` determinant expanded along z, certified by a forward
+/// error bound. `None` when the bound cannot certify the sign.
+#[inline(always)]
+fn filtered(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> Option<Sign> {
+    let (bb, cc, dd) = (b - a, c - a, d - a);
+    let cxdy = cc.x * dd.y;
+    let dxcy = dd.x * cc.y;
+    let dxby = dd.x * bb.y;
+    let bxdy = bb.x * dd.y;
+    let bxcy = bb.x * cc.y;
+    let cxby = cc.x * bb.y;
+    let det = bb.z * (cxdy - dxcy) + cc.z * (dxby - bxdy) + dd.z * (bxcy - cxby);
+    let (bz, cz, dz) = (bb.z.abs(), cc.z.abs(), dd.z.abs());
+    let permanent = (cxdy.abs() + dxcy.abs()) * bz
+        + (dxby.abs() + bxdy.abs()) * cz
+        + (bxcy.abs() + cxby.abs()) * dz;
+    let bound = A * permanent + Z_SLACK * (bz + cz + dz) + (UNDERFLOW_SLACK + extra_slack);
+    if det > bound {
+        Some(Sign::Positive)
+    } else if -det > bound {
+        Some(Sign::Negative)
+    } else {
+        None
+    }
+}
+
+/// Stages 2 to 5, for the few inputs the filter cannot certify.
+#[cold]
+#[inline(never)]
+fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
+    if !(a.is_finite() && b.is_finite() && c.is_finite() && d.is_finite()) {
+        return Sign::Zero;
+    }
+    let grains = [
+        Grain::of(&[a.x, b.x, c.x, d.x]),
+        Grain::of(&[a.y, b.y, c.y, d.y]),
+        Grain::of(&[a.z, b.z, c.z, d.z]),
+    ];
+    if grains.iter().any(|g| g.all_zero()) {
+        return Sign::Zero;
+    }
+    let lo = grains.map(|g| g.lo_min);
+    let span = grains.iter().map(|g| g.span()).max().unwrap_or(0);
+    let points = [a, b, c, d];
+    if span <= SMALL_SPAN {
+        return integer::<1, 2, 3>(&points, lo);
+    }
+    let scale = grains.map(|g| g.unit_scale());
+    let s = points.map(|p| {
+        DVec3::new(
+            scale_pow2(p.x, scale[0]),
+            scale_pow2(p.y, scale[1]),
+            scale_pow2(p.z, scale[2]),
+        )
+    });
+    if span <= ADAPTIVE_SPAN {
+        let p = |v: DVec3| robust::Coord3D {
+            x: v.x,
+            y: v.y,
+            z: v.z,
+        };
+        return -Sign::of_f64(robust::orient3d(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
+    }
+    if let Some(sign) = filtered(s[0], s[1], s[2], s[3], SCALED_SLACK) {
+        return sign;
+    }
+    integer::<34, 67, 100>(&points, lo)
+}
+
+/// Stages 2 and 5: each axis as integers at its finest bit `lo[axis]`, the
+/// determinant in `D`-limb differences, `M`-limb minors and an `R`-limb
+/// result. Stage 2 uses `<1, 2, 3>` (see `SMALL_SPAN`). Stage 5 uses
+/// `<34, 67, 100>`: coordinates below `2^2098` (a finite `f64` over its
+/// finest possible bit `2^-1074`), differences below `2^2099`, minors below
+/// `2^4199`, the determinant below `2^6300`.
+fn integer<const D: usize, const M: usize, const R: usize>(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
+    let int = |v: DVec3| {
+        [
+            Wide::<D>::from_f64(v.x, lo[0]),
+            Wide::from_f64(v.y, lo[1]),
+            Wide::from_f64(v.z, lo[2]),
+        ]
+    };
+    let a = int(p[0]);
+    let rel = |v: DVec3| {
+        let q = int(v);
+        [q[0].sub(&a[0]), q[1].sub(&a[1]), q[2].sub(&a[2])]
+    };
+    let (b, c, d) = (rel(p[1]), rel(p[2]), rel(p[3]));
+    let minor = |u: &[Wide<D>; 3], v: &[Wide<D>; 3]| {
+        Wide::<M>::mul(&u[0], &v[1]).sub(&Wide::<M>::mul(&v[0], &u[1]))
+    };
+    let det = Wide::<R>::mul(&b[2], &minor(&c, &d))
+        .add(&Wide::<R>::mul(&c[2], &minor(&d, &b)))
+        .add(&Wide::<R>::mul(&d[2], &minor(&b, &c)));
+    det.sign()
 }

@@ -50,7 +50,12 @@ pub fn side_of_plane(
     x2: impl IntoDVec3,
     p: impl IntoDVec3,
 ) -> Sign {
-    orient3d(x0.into_dvec3(), x1.into_dvec3(), x2.into_dvec3(), p.into_dvec3())
+    orient3d(
+        x0.into_dvec3(),
+        x1.into_dvec3(),
+        x2.into_dvec3(),
+        p.into_dvec3(),
+    )
 }
 
 /// [`side_of_plane`] that rejects a NaN or infinite coordinate with
@@ -62,7 +67,12 @@ pub fn try_side_of_plane(
     x2: impl IntoDVec3,
     p: impl IntoDVec3,
 ) -> Result<Sign, InputError> {
-    let (x0, x1, x2, p) = (x0.into_dvec3(), x1.into_dvec3(), x2.into_dvec3(), p.into_dvec3());
+    let (x0, x1, x2, p) = (
+        x0.into_dvec3(),
+        x1.into_dvec3(),
+        x2.into_dvec3(),
+        p.into_dvec3(),
+    );
     check_finite3(&[("x0", x0), ("x1", x1), ("x2", x2), ("p", p)])?;
     Ok(orient3d(x0, x1, x2, p))
 }
@@ -108,8 +118,13 @@ pub fn try_same_side(
     p: impl IntoDVec3,
     q: impl IntoDVec3,
 ) -> Result<SideRelation, InputError> {
-    let (x0, x1, x2, p, q) =
-        (x0.into_dvec3(), x1.into_dvec3(), x2.into_dvec3(), p.into_dvec3(), q.into_dvec3());
+    let (x0, x1, x2, p, q) = (
+        x0.into_dvec3(),
+        x1.into_dvec3(),
+        x2.into_dvec3(),
+        p.into_dvec3(),
+        q.into_dvec3(),
+    );
     check_finite3(&[("x0", x0), ("x1", x1), ("x2", x2), ("p", p), ("q", q)])?;
     Ok(same_side(x0, x1, x2, p, q))
 }

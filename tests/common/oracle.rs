@@ -31,7 +31,10 @@ pub fn exact_parts(v: f64) -> (BigInt, i32) {
 pub fn common_integers(values: &[f64]) -> Vec<BigInt> {
     let parts: Vec<_> = values.iter().map(|&v| exact_parts(v)).collect();
     let emin = parts.iter().map(|p| p.1).min().unwrap_or(0);
-    parts.into_iter().map(|(m, e)| m << ((e - emin) as usize)).collect()
+    parts
+        .into_iter()
+        .map(|(m, e)| m << ((e - emin) as usize))
+        .collect()
 }
 
 fn sign(v: &BigInt) -> i8 {
@@ -125,7 +128,10 @@ mod oracle_self_test {
     #[test]
     fn conventions() {
         assert_eq!(orient2d([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]), 1);
-        assert_eq!(orient3d([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]), 1);
+        assert_eq!(
+            orient3d([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
+            1
+        );
         assert_eq!(incircle([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, 0.0]), 1);
         let t = ([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
         assert_eq!(insphere(t.0, t.1, t.2, t.3, [0.25; 3]), 1);

@@ -1,0 +1,148 @@
+//! What every family shares: the run configuration, the report row, methods
+//! under test and the timing loop. Also compiled into `benches/predicates.rs`.
+
+use exactray::hard_inputs::SplitMix64;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// How much work a run does.
+pub struct Config {
+    /// Cases checked against the exact answer per (family, inputs).
+    pub cases: usize,
+    /// Cases in each timed loop: few enough to stay in cache.
+    pub working_set: usize,
+    /// Timed repetitions per method; the report keeps their median.
+    pub reps: usize,
+    /// Shortest timed loop, so that timer resolution does not matter.
+    pub min_loop: Duration,
+}
+
+impl Config {
+    pub fn new(quick: bool) -> Self {
+        if quick {
+            Config {
+                cases: 50_000,
+                working_set: 2048,
+                reps: 7,
+                min_loop: Duration::from_millis(2),
+            }
+        } else {
+            Config {
+                cases: 200_000,
+                working_set: 2048,
+                reps: 21,
+                min_loop: Duration::from_millis(5),
+            }
+        }
+    }
+
+    /// The case stream of one (family, inputs): fixed, and independent of
+    /// which other families run.
+    pub fn rng(&self, family: &str, inputs: &str) -> SplitMix64 {
+        // FNV-1a: any stable string hash would do.
+        let seed = family
+            .bytes()
+            .chain([b'/'])
+            .chain(inputs.bytes())
+            .fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+                (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+            });
+        SplitMix64::new(seed)
+    }
+}
+
+/// One line of the report, with exactly the fields of a `report.json` row.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub family: &'static str,
+    pub method: String,
+    pub inputs: String,
+    pub ns_per_op: f64,
+    pub cases: u64,
+    pub errors: u64,
+    pub max_ulps: Option<f64>,
+}
+
+/// A routine under test, answering a case of type `C` with an `O`.
+pub trait Measure<C, O> {
+    fn name(&self) -> &'static str;
+    fn answer(&self, case: &C) -> O;
+    /// Answers every case `iters` times; the elapsed time.
+    fn run_loop(&self, cases: &[C], iters: u64) -> Duration;
+}
+
+/// A named closure as a [`Measure`]. The timed loop is generic over the
+/// closure so that it inlines: calling through a pointer per case would
+/// add the same few nanoseconds to every method and hide their ratios.
+pub struct Method<F> {
+    name: &'static str,
+    f: F,
+}
+
+impl<C, O, F: Fn(&C) -> O> Measure<C, O> for Method<F> {
+    fn name(&self) -> &'static str {
+        self.name
+    }
+
+    fn answer(&self, case: &C) -> O {
+        (self.f)(case)
+    }
+
+    fn run_loop(&self, cases: &[C], iters: u64) -> Duration {
+        let start = Instant::now();
+        for _ in 0..iters {
+            for case in cases {
+                black_box((self.f)(black_box(case)));
+            }
+        }
+        start.elapsed()
+    }
+}
+
+/// A boxed [`Method`], for a family's list of methods.
+pub fn method<C, O, F: Fn(&C) -> O + 'static>(name: &'static str, f: F) -> Box<dyn Measure<C, O>> {
+    Box::new(Method { name, f })
+}
+
+/// Nanoseconds per case of each method: the median over `cfg.reps` timed
+/// loops. Repetitions interleave the methods so that a slow spell of a
+/// shared machine hits all of them alike and their ratios stay fair.
+pub fn time_methods<C, O>(
+    cfg: &Config,
+    cases: &[C],
+    methods: &[Box<dyn Measure<C, O>>],
+) -> Vec<f64> {
+    let iters: Vec<u64> = methods
+        .iter()
+        .map(|m| {
+            // Warm up, then size the loop to last at least `min_loop`.
+            let mut n = 1;
+            loop {
+                let t = m.run_loop(cases, n);
+                if t >= cfg.min_loop / 4 {
+                    let per = t.as_secs_f64() / n as f64;
+                    break ((cfg.min_loop.as_secs_f64() / per).ceil() as u64).max(1);
+                }
+                n *= 4;
+            }
+        })
+        .collect();
+    let mut samples = vec![Vec::with_capacity(cfg.reps); methods.len()];
+    for _ in 0..cfg.reps {
+        for ((m, &n), s) in methods.iter().zip(&iters).zip(&mut samples) {
+            let t = m.run_loop(cases, n);
+            s.push(t.as_secs_f64() * 1e9 / (n as f64 * cases.len() as f64));
+        }
+    }
+    samples.into_iter().map(median).collect()
+}
+
+pub fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}

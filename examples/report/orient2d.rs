@@ -1,0 +1,31 @@
+//! orient2d: the sign of `(b - a) x (c - a)`, positive counterclockwise.
+
+use crate::framework::method;
+use crate::oracle;
+use crate::signs::{SignFamily, coord, sign_of};
+use exactray::hard_inputs::orient2d_case;
+use glam::DVec2;
+
+type Case = [DVec2; 3];
+
+pub fn family() -> SignFamily<Case> {
+    SignFamily {
+        name: "orient2d",
+        generate: orient2d_case,
+        oracle: |&[a, b, c]| oracle::orient2d(a.into(), b.into(), c.into()),
+        methods: vec![
+            method("exactray", |&[a, b, c]: &Case| {
+                exactray::orient2d(a, b, c).as_i8()
+            }),
+            method("naive", |&[a, b, c]: &Case| {
+                sign_of((b - a).perp_dot(c - a))
+            }),
+            method("robust", |&[a, b, c]: &Case| {
+                sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
+            }),
+            method("geometry-predicates", |&[a, b, c]: &Case| {
+                sign_of(geometry_predicates::orient2d(a.into(), b.into(), c.into()))
+            }),
+        ],
+    }
+}

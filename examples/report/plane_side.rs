@@ -1,0 +1,43 @@
+//! plane_side: whether `p` and `q` lie on the same side of the plane of
+//! `x0, x1, x2` (1), on opposite sides (-1), or either on it (0). Peers
+//! answer it with two orient3d calls, as a user of them would.
+
+use crate::framework::method;
+use crate::oracle;
+use crate::orient3d;
+use crate::signs::{NAN, SignFamily};
+use exactray::hard_inputs::plane_side_case;
+use glam::DVec3;
+
+type Case = [DVec3; 5];
+
+type Orient3d = fn(DVec3, DVec3, DVec3, DVec3) -> i8;
+
+#[inline(always)]
+fn by_orient3d(o: Orient3d, &[x0, x1, x2, p, q]: &Case) -> i8 {
+    match (o(x0, x1, x2, p), o(x0, x1, x2, q)) {
+        (NAN, _) | (_, NAN) => NAN,
+        (s, t) => s * t,
+    }
+}
+
+pub fn family() -> SignFamily<Case> {
+    SignFamily {
+        name: "plane_side",
+        generate: plane_side_case,
+        oracle: |c| {
+            let [x0, x1, x2, p, q] = c.map(<[f64; 3]>::from);
+            oracle::plane_side(x0, x1, x2, p, q)
+        },
+        methods: vec![
+            method("exactray", |&[x0, x1, x2, p, q]: &Case| {
+                exactray::same_side(x0, x1, x2, p, q).as_i8()
+            }),
+            method("naive", |c: &Case| by_orient3d(orient3d::naive, c)),
+            method("robust", |c: &Case| by_orient3d(orient3d::robust, c)),
+            method("geometry-predicates", |c: &Case| {
+                by_orient3d(orient3d::geometry_predicates, c)
+            }),
+        ],
+    }
+}

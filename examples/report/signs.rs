@@ -1,0 +1,89 @@
+//! Families whose answer is a sign: every method is checked case by case
+//! against the exact oracle.
+
+use crate::framework::{Config, Measure, Row, time_methods};
+use exactray::hard_inputs::{InputClass, SplitMix64};
+
+/// What a float method's NaN counts as: never equal to an exact sign.
+pub const NAN: i8 = i8::MIN;
+
+/// The sign of a float result, with NaN as [`NAN`].
+pub fn sign_of(v: f64) -> i8 {
+    if v > 0.0 {
+        1
+    } else if v < 0.0 {
+        -1
+    } else if v == 0.0 {
+        0
+    } else {
+        NAN
+    }
+}
+
+/// Minus [`sign_of`], for peers whose convention is the opposite of ours.
+pub fn minus_sign_of(v: f64) -> i8 {
+    match sign_of(v) {
+        NAN => NAN,
+        s => -s,
+    }
+}
+
+/// A sign family: how to draw its cases, its exact answer, its methods.
+pub struct SignFamily<C> {
+    pub name: &'static str,
+    pub generate: fn(InputClass, &mut SplitMix64) -> C,
+    pub oracle: fn(&C) -> i8,
+    pub methods: Vec<Box<dyn Measure<C, i8>>>,
+}
+
+impl<C> SignFamily<C> {
+    /// `cfg.cases` cases of one class, always the same ones.
+    pub fn cases(&self, cfg: &Config, class: InputClass) -> Vec<C> {
+        let mut rng = cfg.rng(self.name, class.name());
+        (0..cfg.cases)
+            .map(|_| (self.generate)(class, &mut rng))
+            .collect()
+    }
+
+    /// One row per (inputs, method).
+    pub fn run(&self, cfg: &Config) -> Vec<Row> {
+        let mut rows = Vec::new();
+        for class in InputClass::ALL {
+            let cases = self.cases(cfg, class);
+            let truth: Vec<i8> = cases.iter().map(self.oracle).collect();
+            let timed = &cases[..cfg.working_set.min(cases.len())];
+            let times = time_methods(cfg, timed, &self.methods);
+            for (m, ns_per_op) in self.methods.iter().zip(times) {
+                let errors = cases
+                    .iter()
+                    .zip(&truth)
+                    .filter(|(c, t)| m.answer(c) != **t)
+                    .count();
+                rows.push(Row {
+                    family: self.name,
+                    method: m.name().to_string(),
+                    inputs: class.name().to_string(),
+                    ns_per_op,
+                    cases: cases.len() as u64,
+                    errors: errors as u64,
+                    max_ulps: None,
+                });
+            }
+        }
+        rows
+    }
+}
+
+/// A point for the `robust` crate.
+pub fn coord(p: glam::DVec2) -> robust::Coord<f64> {
+    robust::Coord { x: p.x, y: p.y }
+}
+
+/// A 3D point for the `robust` crate.
+pub fn coord3(p: glam::DVec3) -> robust::Coord3D<f64> {
+    robust::Coord3D {
+        x: p.x,
+        y: p.y,
+        z: p.z,
+    }
+}

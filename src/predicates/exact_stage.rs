@@ -1,1 +1,0 @@
-//! Exact stages shared by the predicates (in progress).

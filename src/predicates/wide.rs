@@ -1,0 +1,197 @@
+//! Fixed-width two's-complement integers on the stack, for the exact stages.
+//!
+//! `Wide<N>` holds `N` little-endian 64-bit limbs. Addition and subtraction
+//! wrap modulo `2^(64N)`; multiplication skips the zero high limbs of its
+//! operands, so a wide type costs only what the actual values need. Callers
+//! pick `N` from a proven bound on the magnitudes (stated where each
+//! predicate uses it), so wrapping never happens.
+
+use super::grain::split;
+use crate::sign::Sign;
+
+/// A signed integer of `N` 64-bit limbs (two's complement, little-endian).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Wide<const N: usize> {
+    limbs: [u64; N],
+}
+
+impl<const N: usize> Wide<N> {
+    /// Zero.
+    pub(crate) const ZERO: Self = Wide { limbs: [0; N] };
+
+    /// `m * 2^shift`, for `|m| < 2^63` and `shift + 64 <= 64 * N - 1`.
+    #[inline]
+    pub(crate) fn from_i64_shifted(m: i64, shift: u32) -> Self {
+        let mut r = Self::ZERO;
+        let mag = m.unsigned_abs() as u128;
+        let (word, bit) = ((shift / 64) as usize, shift % 64);
+        let wide = mag << bit;
+        if word < N {
+            r.limbs[word] = wide as u64;
+        }
+        if word + 1 < N {
+            r.limbs[word + 1] = (wide >> 64) as u64;
+        }
+        if m < 0 { r.neg() } else { r }
+    }
+
+    /// The exact value of finite `v`, which must be a multiple of `2^lo`,
+    /// divided by `2^lo`; `N` must hold it (at most `2098 + 1` bits).
+    #[inline]
+    pub(crate) fn from_f64(v: f64, lo: i32) -> Self {
+        let (m, e) = split(v);
+        if m == 0 {
+            return Self::ZERO;
+        }
+        let tz = m.trailing_zeros();
+        Self::from_i64_shifted(m >> tz, (e + tz as i32 - lo) as u32)
+    }
+
+    /// The value of an `i64`.
+    #[cfg(test)]
+    pub(crate) fn from_i64(m: i64) -> Self {
+        let mut r = Self {
+            limbs: [if m < 0 { u64::MAX } else { 0 }; N],
+        };
+        r.limbs[0] = m as u64;
+        r
+    }
+
+    /// `true` when negative.
+    #[inline(always)]
+    pub(crate) fn is_negative(&self) -> bool {
+        (self.limbs[N - 1] as i64) < 0
+    }
+
+    /// The sign of the value.
+    #[inline]
+    pub(crate) fn sign(&self) -> Sign {
+        if self.is_negative() {
+            Sign::Negative
+        } else if self.limbs.iter().any(|&l| l != 0) {
+            Sign::Positive
+        } else {
+            Sign::Zero
+        }
+    }
+
+    /// `-self` (wrapping).
+    #[inline]
+    pub(crate) fn neg(&self) -> Self {
+        let mut r = Self::ZERO;
+        let mut carry = 1u64;
+        for i in 0..N {
+            let (v, c) = (!self.limbs[i]).overflowing_add(carry);
+            r.limbs[i] = v;
+            carry = c as u64;
+        }
+        r
+    }
+
+    /// `self + other` (wrapping).
+    #[inline]
+    pub(crate) fn add(&self, other: &Self) -> Self {
+        let mut r = Self::ZERO;
+        let mut carry = false;
+        for i in 0..N {
+            let (v1, c1) = self.limbs[i].overflowing_add(other.limbs[i]);
+            let (v2, c2) = v1.overflowing_add(carry as u64);
+            r.limbs[i] = v2;
+            carry = c1 | c2;
+        }
+        r
+    }
+
+    /// `self - other` (wrapping).
+    #[inline]
+    pub(crate) fn sub(&self, other: &Self) -> Self {
+        let mut r = Self::ZERO;
+        let mut borrow = false;
+        for i in 0..N {
+            let (v1, b1) = self.limbs[i].overflowing_sub(other.limbs[i]);
+            let (v2, b2) = v1.overflowing_sub(borrow as u64);
+            r.limbs[i] = v2;
+            borrow = b1 | b2;
+        }
+        r
+    }
+
+    /// The magnitude's limbs, how many of them are non-zero, and the sign.
+    #[inline]
+    fn magnitude(&self) -> ([u64; N], usize, bool) {
+        let neg = self.is_negative();
+        let limbs = if neg { self.neg().limbs } else { self.limbs };
+        let mut len = N;
+        while len > 0 && limbs[len - 1] == 0 {
+            len -= 1;
+        }
+        (limbs, len, neg)
+    }
+
+    /// `a * b` into `N` limbs, for `|a * b| < 2^(64N - 1)`. Schoolbook
+    /// multiplication over the non-zero limbs only.
+    #[inline]
+    pub(crate) fn mul<const A: usize, const B: usize>(a: &Wide<A>, b: &Wide<B>) -> Self {
+        let (ma, la, na) = a.magnitude();
+        let (mb, lb, nb) = b.magnitude();
+        let mut r = Self::ZERO;
+        for (i, &x) in ma.iter().enumerate().take(la.min(N)) {
+            let mut carry = 0u128;
+            let top = lb.min(N - i);
+            for (j, &y) in mb.iter().enumerate().take(top) {
+                let t = x as u128 * y as u128 + r.limbs[i + j] as u128 + carry;
+                r.limbs[i + j] = t as u64;
+                carry = t >> 64;
+            }
+            if i + top < N {
+                r.limbs[i + top] = carry as u64;
+            }
+        }
+        if na != nb { r.neg() } else { r }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn to_i128(w: &Wide<2>) -> i128 {
+        (w.limbs[0] as u128 | (w.limbs[1] as u128) << 64) as i128
+    }
+
+    #[test]
+    fn arithmetic_matches_i128() {
+        let vals = [
+            0i64,
+            1,
+            -1,
+            7,
+            -123456789,
+            i64::MAX / 3,
+            -(1 << 62),
+            (1 << 62) - 1,
+        ];
+        for &x in &vals {
+            for &y in &vals {
+                let (a, b) = (Wide::<2>::from_i64(x), Wide::<2>::from_i64(y));
+                assert_eq!(to_i128(&a.add(&b)), x as i128 + y as i128);
+                assert_eq!(to_i128(&a.sub(&b)), x as i128 - y as i128);
+                assert_eq!(to_i128(&Wide::<2>::mul(&a, &b)), x as i128 * y as i128);
+                assert_eq!(
+                    Wide::<2>::mul(&a, &b).sign(),
+                    Sign::from_i8((x as i128 * y as i128).signum() as i8)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn shifted_and_wide_products() {
+        let a = Wide::<4>::from_i64_shifted(-3, 130);
+        let b = Wide::<4>::from_i64_shifted(5, 60);
+        let p = Wide::<4>::mul(&a, &b);
+        let expect = Wide::<4>::from_i64_shifted(-15, 190);
+        assert_eq!(p.sub(&expect).sign(), Sign::Zero);
+        assert_eq!(p.sign(), Sign::Negative);
+    }
+}
