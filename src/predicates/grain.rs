@@ -60,13 +60,26 @@ impl Grain {
     pub(crate) fn span(self) -> i32 {
         self.hi_max - self.lo_min + 1
     }
+}
 
-    /// The exponent `s` such that scaling by `2^s` puts the largest value in
-    /// `[1/2, 1)`.
-    #[inline]
-    pub(crate) fn unit_scale(self) -> i32 {
-        -(self.hi_max + 1)
+/// The exponent `s` such that scaling by `2^s` puts the largest magnitude of
+/// `values` in `[1/2, 1)`; `0` when all are zero. Reads only the largest.
+#[inline]
+pub(crate) fn unit_scale(values: &[f64]) -> i32 {
+    let max = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if max == 0.0 {
+        return 0;
     }
+    let (m, e) = split(max);
+    -(e + 64 - m.leading_zeros() as i32)
+}
+
+/// Whether a filter that failed saw magnitudes (its permanent) where its
+/// bound had no underflow or overflow to absorb: then the input is
+/// genuinely near-degenerate and rescaling it cannot help. `false` for NaN.
+#[inline]
+pub(crate) fn in_range(permanent: f64) -> bool {
+    (pow2(-900)..pow2(900)).contains(&permanent)
 }
 
 /// `v * 2^-lo` as an integer, for `v` a multiple of `2^lo` with

@@ -5,7 +5,7 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, pow2, scale_pow2};
+use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec2;
@@ -49,8 +49,8 @@ const SCALED_SLACK: f64 = 65536.0 * TINY;
 #[inline(always)]
 pub(super) fn incircle(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Sign {
     match filtered(a, b, c, d, Guard::MinDifference) {
-        Some(s) => s,
-        None => exact(a, b, c, d),
+        Ok(s) => s,
+        Err(permanent) => exact(a, b, c, d, in_range(permanent)),
     }
 }
 
@@ -64,15 +64,16 @@ enum Guard {
 }
 
 /// Stage 1 (and 4, on scaled input): the `f64` determinant, certified by a
-/// forward error bound. `None` when the bound cannot certify the sign.
+/// forward error bound. `Err(permanent)` when the bound cannot certify the
+/// sign, `Err(NaN)` when the difference guard declined.
 #[inline(always)]
-fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Option<Sign> {
+fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign, f64> {
     let (ad, bd, cd) = (a - d, b - d, c - d);
     let slack = match guard {
         Guard::MinDifference => {
             let m = ad.abs().min(bd.abs()).min(cd.abs()).min_element();
             if m < GUARD_MIN_DIFF || m.is_nan() {
-                return None;
+                return Err(f64::NAN);
             }
             0.0
         }
@@ -93,38 +94,42 @@ fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Option<Sign
         + (axby.abs() + bxay.abs()) * clift;
     let bound = A * permanent + slack;
     if det > bound {
-        Some(Sign::Positive)
+        Ok(Sign::Positive)
     } else if -det > bound {
-        Some(Sign::Negative)
+        Ok(Sign::Negative)
     } else {
-        None
+        Err(permanent)
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Sign {
+fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
     let points = [a, b, c, d];
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
-    let grain = Grain::of(&[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]);
+    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+    let k = unit_scale(&coords);
+    let s = points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)));
+    // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
+    let scaled_filter = || filtered(s[0], s[1], s[2], s[3], Guard::Slack(SCALED_SLACK)).ok();
+    if !in_range && let Some(sign) = scaled_filter() {
+        return sign;
+    }
+    let grain = Grain::of(&coords);
     if grain.all_zero() {
         return Sign::Zero;
     }
     if grain.span() <= SMALL_SPAN {
         return integer::<1, 2, 4>(&points, grain.lo_min);
     }
-    let s = points.map(|p| {
-        let k = grain.unit_scale();
-        DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k))
-    });
     if grain.span() <= ADAPTIVE_SPAN {
         let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
         return Sign::of_f64(robust::incircle(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
     }
-    if let Some(sign) = filtered(s[0], s[1], s[2], s[3], Guard::Slack(SCALED_SLACK)) {
+    if in_range && let Some(sign) = scaled_filter() {
         return sign;
     }
     integer::<34, 67, 133>(&points, grain.lo_min)

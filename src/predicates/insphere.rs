@@ -6,7 +6,7 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, pow2, scale_pow2};
+use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec3;
@@ -49,8 +49,8 @@ const SCALED_SLACK: f64 = 16777216.0 * TINY;
 #[inline(always)]
 pub(super) fn insphere(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
     match filtered(&[a, b, c, d, e], None) {
-        Some(s) => s,
-        None => exact(a, b, c, d, e),
+        Ok(s) => s,
+        Err(permanent) => exact(a, b, c, d, e, in_range(permanent)),
     }
 }
 
@@ -58,7 +58,7 @@ pub(super) fn insphere(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign
 /// determinant, certified by a forward error bound. With `None`, the
 /// difference guard makes the bound hold under underflow instead.
 #[inline(always)]
-fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Option<Sign> {
+fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
     let e = p[4];
     let (ae, be, ce, de) = (p[0] - e, p[1] - e, p[2] - e, p[3] - e);
     let slack = match scaled_slack {
@@ -70,7 +70,7 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Option<Sign> {
                 .min(de.abs())
                 .min_element();
             if m < GUARD_MIN_DIFF || m.is_nan() {
-                return None;
+                return Err(f64::NAN);
             }
             0.0
         }
@@ -112,23 +112,30 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Option<Sign> {
     // Shewchuk's determinant is positive for "inside" under his opposite
     // orientation convention: ours is its negation.
     if det > bound {
-        Some(Sign::Negative)
+        Ok(Sign::Negative)
     } else if -det > bound {
-        Some(Sign::Positive)
+        Ok(Sign::Positive)
     } else {
-        None
+        Err(permanent)
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
+fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Sign {
     let points = [a, b, c, d, e];
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
     let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
+    let k = unit_scale(&coords);
+    let s = points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)));
+    // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
+    let scaled_filter = || filtered(&s, Some(SCALED_SLACK)).ok();
+    if !in_range && let Some(sign) = scaled_filter() {
+        return sign;
+    }
     let grain = Grain::of(&coords);
     if grain.all_zero() {
         return Sign::Zero;
@@ -136,8 +143,6 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
     if grain.span() <= SMALL_SPAN {
         return integer::<1, 2, 3, 5>(&points, grain.lo_min);
     }
-    let k = grain.unit_scale();
-    let s = points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)));
     if grain.span() <= ADAPTIVE_SPAN {
         let p = |v: DVec3| robust::Coord3D {
             x: v.x,
@@ -152,7 +157,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
             p(s[4]),
         ));
     }
-    if let Some(sign) = filtered(&s, Some(SCALED_SLACK)) {
+    if in_range && let Some(sign) = scaled_filter() {
         return sign;
     }
     integer::<34, 67, 100, 166>(&points, grain.lo_min)

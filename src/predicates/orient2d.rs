@@ -3,7 +3,7 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, scale_pow2, to_integer_i64};
+use super::grain::{Grain, TINY, in_range, scale_pow2, to_integer_i64, unit_scale};
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec2;
@@ -43,34 +43,45 @@ const SCALED_SLACK: f64 = 64.0 * TINY;
 #[inline(always)]
 pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Sign {
     match filtered(a, b, c, 0.0) {
-        Some(s) => s,
-        None => exact(a, b, c),
+        Ok(s) => s,
+        Err(detsum) => exact(a, b, c, in_range(detsum)),
     }
 }
 
 /// Stage 1: the `f64` determinant, certified by a forward error bound.
-/// `None` when the bound cannot certify the sign (including non-finite input).
+/// `Err(detsum)` when the bound cannot certify the sign (including
+/// non-finite input), so the caller can tell underflow and overflow from
+/// near-degeneracy.
 #[inline(always)]
-fn filtered(a: DVec2, b: DVec2, c: DVec2, extra_slack: f64) -> Option<Sign> {
+fn filtered(a: DVec2, b: DVec2, c: DVec2, extra_slack: f64) -> Result<Sign, f64> {
     let detleft = (a.x - c.x) * (b.y - c.y);
     let detright = (a.y - c.y) * (b.x - c.x);
     let det = detleft - detright;
-    let bound = A * (detleft.abs() + detright.abs()) + (UNDERFLOW_SLACK + extra_slack);
-    if det > bound {
-        Some(Sign::Positive)
-    } else if -det > bound {
-        Some(Sign::Negative)
+    let detsum = detleft.abs() + detright.abs();
+    // `|det| > A * detsum + slack`, tested as a difference: the slack is
+    // subnormal, and adding it would cost a microcode assist on x86 for
+    // every call. `fl(x - y) > s` implies `x - y > s` for representable `s`.
+    if det.abs() - A * detsum > UNDERFLOW_SLACK + extra_slack {
+        Ok(Sign::of_f64(det))
     } else {
-        None
+        Err(detsum)
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec2, b: DVec2, c: DVec2) -> Sign {
+fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     if !(a.is_finite() && b.is_finite() && c.is_finite()) {
         return Sign::Zero;
+    }
+    let scale = [unit_scale(&[a.x, b.x, c.x]), unit_scale(&[a.y, b.y, c.y])];
+    let scaled = |p: DVec2| DVec2::new(scale_pow2(p.x, scale[0]), scale_pow2(p.y, scale[1]));
+    let (sa, sb, sc) = (scaled(a), scaled(b), scaled(c));
+    // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
+    let scaled_filter = || filtered(sa, sb, sc, SCALED_SLACK).ok();
+    if !in_range && let Some(s) = scaled_filter() {
+        return s;
     }
     let gx = Grain::of(&[a.x, b.x, c.x]);
     let gy = Grain::of(&[a.y, b.y, c.y]);
@@ -81,18 +92,11 @@ fn exact(a: DVec2, b: DVec2, c: DVec2) -> Sign {
     if span <= SMALL_SPAN {
         return small_integer(a, b, c, gx.lo_min, gy.lo_min);
     }
-    let scaled = |p: DVec2| {
-        DVec2::new(
-            scale_pow2(p.x, gx.unit_scale()),
-            scale_pow2(p.y, gy.unit_scale()),
-        )
-    };
-    let (sa, sb, sc) = (scaled(a), scaled(b), scaled(c));
     if span <= ADAPTIVE_SPAN {
         let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
         return Sign::of_f64(robust::orient2d(p(sa), p(sb), p(sc)));
     }
-    if let Some(s) = filtered(sa, sb, sc, SCALED_SLACK) {
+    if in_range && let Some(s) = scaled_filter() {
         return s;
     }
     big_integer(a, b, c, gx.lo_min, gy.lo_min)

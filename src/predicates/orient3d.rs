@@ -4,7 +4,7 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, scale_pow2};
+use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec3;
@@ -43,18 +43,22 @@ const ADAPTIVE_SPAN: i32 = 300;
 /// `72 * 2^-1073 < 2^-1066`. `2^-1064` leaves a factor 4.
 const SCALED_SLACK: f64 = 1024.0 * TINY;
 
+/// `2^1000`: the slack comparison is made at this scale so that its
+/// operands are normal numbers (see `filtered`).
+const LIFT: f64 = pow2(1000);
+
 #[inline(always)]
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
     match filtered(a, b, c, d, 0.0) {
-        Some(s) => s,
-        None => exact(a, b, c, d),
+        Ok(s) => s,
+        Err(permanent) => exact(a, b, c, d, in_range(permanent)),
     }
 }
 
 /// Stage 1: the `f64` determinant expanded along z, certified by a forward
-/// error bound. `None` when the bound cannot certify the sign.
+/// error bound. `Err(permanent)` when the bound cannot certify the sign.
 #[inline(always)]
-fn filtered(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> Option<Sign> {
+fn filtered(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> Result<Sign, f64> {
     let (bb, cc, dd) = (b - a, c - a, d - a);
     let cxdy = cc.x * dd.y;
     let dxcy = dd.x * cc.y;
@@ -67,63 +71,105 @@ fn filtered(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> Option<
     let permanent = (cxdy.abs() + dxcy.abs()) * bz
         + (dxby.abs() + bxdy.abs()) * cz
         + (bxcy.abs() + cxby.abs()) * dz;
-    let bound = A * permanent + Z_SLACK * (bz + cz + dz) + (UNDERFLOW_SLACK + extra_slack);
-    if det > bound {
-        Some(Sign::Positive)
-    } else if -det > bound {
-        Some(Sign::Negative)
+    // `|det| - A * permanent > Z_SLACK * (bz + cz + dz) + UNDERFLOW_SLACK`,
+    // both sides times 2^1000: the slack constants are subnormal, and
+    // arithmetic on them costs a microcode assist on x86 on every call.
+    // Scaling the left side by a power of two is exact (an overflow to
+    // infinity only where the inequality holds anyway); the right side's
+    // constants are normal and its rounding is within their factor-2 margin.
+    let margin = (det.abs() - A * permanent) * LIFT;
+    if margin > (Z_SLACK * LIFT) * (bz + cz + dz) + (UNDERFLOW_SLACK + extra_slack) * LIFT {
+        Ok(Sign::of_f64(det))
     } else {
-        None
+        Err(permanent)
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
-    if !(a.is_finite() && b.is_finite() && c.is_finite() && d.is_finite()) {
+fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
+    let points = [a, b, c, d];
+    if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
-    let grains = [
-        Grain::of(&[a.x, b.x, c.x, d.x]),
-        Grain::of(&[a.y, b.y, c.y, d.y]),
-        Grain::of(&[a.z, b.z, c.z, d.z]),
-    ];
+    let axis = |k: usize| [a[k], b[k], c[k], d[k]];
+    let scaled = || {
+        let scale = [unit_scale(&axis(0)), unit_scale(&axis(1)), unit_scale(&axis(2))];
+        points.map(|p| {
+            DVec3::new(
+                scale_pow2(p.x, scale[0]),
+                scale_pow2(p.y, scale[1]),
+                scale_pow2(p.z, scale[2]),
+            )
+        })
+    };
+    // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
+    let scaled_filter = |s: [DVec3; 4]| filtered(s[0], s[1], s[2], s[3], SCALED_SLACK).ok();
+    if !in_range && let Some(sign) = scaled_filter(scaled()) {
+        return sign;
+    }
+    let grains = [Grain::of(&axis(0)), Grain::of(&axis(1)), Grain::of(&axis(2))];
     if grains.iter().any(|g| g.all_zero()) {
         return Sign::Zero;
     }
     let lo = grains.map(|g| g.lo_min);
     let span = grains.iter().map(|g| g.span()).max().unwrap_or(0);
-    let points = [a, b, c, d];
     if span <= SMALL_SPAN {
-        return integer::<1, 2, 3>(&points, lo);
+        return small_integer(&points, lo);
     }
-    let scale = grains.map(|g| g.unit_scale());
-    let s = points.map(|p| {
-        DVec3::new(
-            scale_pow2(p.x, scale[0]),
-            scale_pow2(p.y, scale[1]),
-            scale_pow2(p.z, scale[2]),
-        )
-    });
+    let s = scaled();
     if span <= ADAPTIVE_SPAN {
-        let p = |v: DVec3| robust::Coord3D {
-            x: v.x,
-            y: v.y,
-            z: v.z,
-        };
+        let p = |v: DVec3| robust::Coord3D { x: v.x, y: v.y, z: v.z };
         return -Sign::of_f64(robust::orient3d(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
     }
-    if let Some(sign) = filtered(s[0], s[1], s[2], s[3], SCALED_SLACK) {
+    if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
     integer::<34, 67, 100>(&points, lo)
 }
 
-/// Stages 2 and 5: each axis as integers at its finest bit `lo[axis]`, the
+/// Stage 2: each axis as integers at its finest bit, in native integers
+/// (see `SMALL_SPAN`): differences in `i64`, minors in `i128`, and the
+/// 189-bit determinant as an `i128` high part and a `u64` low part.
+fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
+    let int = |v: DVec3| {
+        [
+            to_integer_i64(v.x, lo[0]),
+            to_integer_i64(v.y, lo[1]),
+            to_integer_i64(v.z, lo[2]),
+        ]
+    };
+    let a = int(p[0]);
+    let rel = |v: DVec3| {
+        let q = int(v);
+        [q[0] - a[0], q[1] - a[1], q[2] - a[2]]
+    };
+    let (b, c, d) = (rel(p[1]), rel(p[2]), rel(p[3]));
+    let minor = |u: [i64; 3], v: [i64; 3]| u[0] as i128 * v[1] as i128 - v[0] as i128 * u[1] as i128;
+    // det = sum z * m with |z| < 2^62, |m| < 2^125. Write m = hi 2^64 + lo
+    // (lo in [0, 2^64)) and z * lo = q 2^64 + r: then
+    // det = (sum z hi + sum q + carry(sum r)) 2^64 + low64(sum r), where the
+    // high part stays below 2^126 and the low part is non-negative.
+    let mut high: i128 = 0;
+    let mut low: u128 = 0;
+    for (z, m) in [(b[2], minor(c, d)), (c[2], minor(d, b)), (d[2], minor(b, c))] {
+        high += z as i128 * (m >> 64);
+        let zl = z as i128 * (m as u64 as i128);
+        high += zl >> 64;
+        low += zl as u64 as u128;
+    }
+    high += (low >> 64) as i128;
+    if high != 0 {
+        Sign::from_i8(high.signum() as i8)
+    } else {
+        Sign::from_i8((low as u64 != 0) as i8)
+    }
+}
+
+/// Stage 5: each axis as integers at its finest bit `lo[axis]`, the
 /// determinant in `D`-limb differences, `M`-limb minors and an `R`-limb
-/// result. Stage 2 uses `<1, 2, 3>` (see `SMALL_SPAN`). Stage 5 uses
-/// `<34, 67, 100>`: coordinates below `2^2098` (a finite `f64` over its
+/// result. `<34, 67, 100>` holds every finite input: coordinates below `2^2098` (a finite `f64` over its
 /// finest possible bit `2^-1074`), differences below `2^2099`, minors below
 /// `2^4199`, the determinant below `2^6300`.
 fn integer<const D: usize, const M: usize, const R: usize>(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
