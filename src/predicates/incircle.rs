@@ -111,11 +111,14 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
         return Sign::Zero;
     }
     let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
-    let k = unit_scale(&coords);
-    let s = points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)));
+    let scaled = || {
+        let k = unit_scale(&coords);
+        points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)))
+    };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
-    let scaled_filter = || filtered(s[0], s[1], s[2], s[3], Guard::Slack(SCALED_SLACK)).ok();
-    if !in_range && let Some(sign) = scaled_filter() {
+    let scaled_filter =
+        |s: [DVec2; 4]| filtered(s[0], s[1], s[2], s[3], Guard::Slack(SCALED_SLACK)).ok();
+    if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
     let grain = Grain::of(&coords);
@@ -125,11 +128,12 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
     if grain.span() <= SMALL_SPAN {
         return integer::<1, 2, 4>(&points, grain.lo_min);
     }
+    let s = scaled();
     if grain.span() <= ADAPTIVE_SPAN {
         let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
         return Sign::of_f64(robust::incircle(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
     }
-    if in_range && let Some(sign) = scaled_filter() {
+    if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
     integer::<34, 67, 133>(&points, grain.lo_min)

@@ -129,11 +129,13 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Si
         return Sign::Zero;
     }
     let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
-    let k = unit_scale(&coords);
-    let s = points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)));
+    let scaled = || {
+        let k = unit_scale(&coords);
+        points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)))
+    };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
-    let scaled_filter = || filtered(&s, Some(SCALED_SLACK)).ok();
-    if !in_range && let Some(sign) = scaled_filter() {
+    let scaled_filter = |s: [DVec3; 5]| filtered(&s, Some(SCALED_SLACK)).ok();
+    if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
     let grain = Grain::of(&coords);
@@ -143,6 +145,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Si
     if grain.span() <= SMALL_SPAN {
         return integer::<1, 2, 3, 5>(&points, grain.lo_min);
     }
+    let s = scaled();
     if grain.span() <= ADAPTIVE_SPAN {
         let p = |v: DVec3| robust::Coord3D {
             x: v.x,
@@ -157,7 +160,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Si
             p(s[4]),
         ));
     }
-    if in_range && let Some(sign) = scaled_filter() {
+    if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
     integer::<34, 67, 100, 166>(&points, grain.lo_min)

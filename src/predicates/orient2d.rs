@@ -3,7 +3,7 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, in_range, scale_pow2, to_integer_i64, unit_scale};
+use super::grain::{Grain, TINY, in_range, scale_pow2, split, to_integer_i64, unit_scale};
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec2;
@@ -75,13 +75,17 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     if !(a.is_finite() && b.is_finite() && c.is_finite()) {
         return Sign::Zero;
     }
-    let scale = [unit_scale(&[a.x, b.x, c.x]), unit_scale(&[a.y, b.y, c.y])];
-    let scaled = |p: DVec2| DVec2::new(scale_pow2(p.x, scale[0]), scale_pow2(p.y, scale[1]));
-    let (sa, sb, sc) = (scaled(a), scaled(b), scaled(c));
+    let scaled = || {
+        let scale = [unit_scale(&[a.x, b.x, c.x]), unit_scale(&[a.y, b.y, c.y])];
+        [a, b, c].map(|p| DVec2::new(scale_pow2(p.x, scale[0]), scale_pow2(p.y, scale[1])))
+    };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
-    let scaled_filter = || filtered(sa, sb, sc, SCALED_SLACK).ok();
-    if !in_range && let Some(s) = scaled_filter() {
-        return s;
+    let scaled_filter = |s: [DVec2; 3]| filtered(s[0], s[1], s[2], SCALED_SLACK).ok();
+    if !in_range && let Some(sign) = scaled_filter(scaled()) {
+        return sign;
+    }
+    if let Some(sign) = same_binade_integer(a, b, c) {
+        return sign;
     }
     let gx = Grain::of(&[a.x, b.x, c.x]);
     let gy = Grain::of(&[a.y, b.y, c.y]);
@@ -92,22 +96,50 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     if span <= SMALL_SPAN {
         return small_integer(a, b, c, gx.lo_min, gy.lo_min);
     }
+    let s = scaled();
     if span <= ADAPTIVE_SPAN {
         let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
-        return Sign::of_f64(robust::orient2d(p(sa), p(sb), p(sc)));
+        return Sign::of_f64(robust::orient2d(p(s[0]), p(s[1]), p(s[2])));
     }
-    if in_range && let Some(s) = scaled_filter() {
-        return s;
+    if in_range && let Some(sign) = scaled_filter(s) {
+        return sign;
     }
     big_integer(a, b, c, gx.lo_min, gy.lo_min)
 }
 
+/// Stage 2, quick entry: when each axis's significands sit within 2^9 of
+/// one another (the common near-degenerate case), shift them onto the
+/// smallest exponent directly: integers below `2^62`, as in
+/// `small_integer`, without counting trailing zeros. `None` otherwise.
+#[inline]
+fn same_binade_integer(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
+    let axis = |v: [f64; 3]| -> Option<[i64; 3]> {
+        let parts = v.map(split);
+        let nonzero = |i: usize| parts[i].0 != 0;
+        let emin = (0..3).filter(|&i| nonzero(i)).map(|i| parts[i].1).min()?;
+        let emax = parts.iter().map(|p| p.1).max()?;
+        (emax - emin <= 9).then(|| parts.map(|(m, e)| if m == 0 { 0 } else { m << (e - emin) }))
+    };
+    let x = axis([a.x, b.x, c.x])?;
+    let y = axis([a.y, b.y, c.y])?;
+    Some(integer_det(x, y))
+}
+
+/// The sign of `(b - a) x (c - a)` for integer coordinates below `2^62`:
+/// differences below `2^63`, products below `2^126`, determinant below
+/// `2^127`.
+#[inline]
+fn integer_det(x: [i64; 3], y: [i64; 3]) -> Sign {
+    let det = (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128
+        - (y[1] - y[0]) as i128 * (x[2] - x[0]) as i128;
+    Sign::from_i8(det.signum() as i8)
+}
+
 /// Stage 2: each axis as integers at its finest bit (`span <= 62`).
 fn small_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
-    let i = |p: DVec2| (to_integer_i64(p.x, lox), to_integer_i64(p.y, loy));
-    let ((ax, ay), (bx, by), (cx, cy)) = (i(a), i(b), i(c));
-    let det = (bx - ax) as i128 * (cy - ay) as i128 - (by - ay) as i128 * (cx - ax) as i128;
-    Sign::from_i8(det.signum() as i8)
+    let x = [a.x, b.x, c.x].map(|v| to_integer_i64(v, lox));
+    let y = [a.y, b.y, c.y].map(|v| to_integer_i64(v, loy));
+    integer_det(x, y)
 }
 
 /// Stage 5: each axis as integers at its finest bit, whatever the span.

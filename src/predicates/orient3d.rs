@@ -95,7 +95,11 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     }
     let axis = |k: usize| [a[k], b[k], c[k], d[k]];
     let scaled = || {
-        let scale = [unit_scale(&axis(0)), unit_scale(&axis(1)), unit_scale(&axis(2))];
+        let scale = [
+            unit_scale(&axis(0)),
+            unit_scale(&axis(1)),
+            unit_scale(&axis(2)),
+        ];
         points.map(|p| {
             DVec3::new(
                 scale_pow2(p.x, scale[0]),
@@ -109,7 +113,11 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
-    let grains = [Grain::of(&axis(0)), Grain::of(&axis(1)), Grain::of(&axis(2))];
+    let grains = [
+        Grain::of(&axis(0)),
+        Grain::of(&axis(1)),
+        Grain::of(&axis(2)),
+    ];
     if grains.iter().any(|g| g.all_zero()) {
         return Sign::Zero;
     }
@@ -120,7 +128,11 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     }
     let s = scaled();
     if span <= ADAPTIVE_SPAN {
-        let p = |v: DVec3| robust::Coord3D { x: v.x, y: v.y, z: v.z };
+        let p = |v: DVec3| robust::Coord3D {
+            x: v.x,
+            y: v.y,
+            z: v.z,
+        };
         return -Sign::of_f64(robust::orient3d(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
     }
     if in_range && let Some(sign) = scaled_filter(s) {
@@ -146,14 +158,19 @@ fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
         [q[0] - a[0], q[1] - a[1], q[2] - a[2]]
     };
     let (b, c, d) = (rel(p[1]), rel(p[2]), rel(p[3]));
-    let minor = |u: [i64; 3], v: [i64; 3]| u[0] as i128 * v[1] as i128 - v[0] as i128 * u[1] as i128;
+    let minor =
+        |u: [i64; 3], v: [i64; 3]| u[0] as i128 * v[1] as i128 - v[0] as i128 * u[1] as i128;
     // det = sum z * m with |z| < 2^62, |m| < 2^125. Write m = hi 2^64 + lo
     // (lo in [0, 2^64)) and z * lo = q 2^64 + r: then
     // det = (sum z hi + sum q + carry(sum r)) 2^64 + low64(sum r), where the
     // high part stays below 2^126 and the low part is non-negative.
     let mut high: i128 = 0;
     let mut low: u128 = 0;
-    for (z, m) in [(b[2], minor(c, d)), (c[2], minor(d, b)), (d[2], minor(b, c))] {
+    for (z, m) in [
+        (b[2], minor(c, d)),
+        (c[2], minor(d, b)),
+        (d[2], minor(b, c)),
+    ] {
         high += z as i128 * (m >> 64);
         let zl = z as i128 * (m as u64 as i128);
         high += zl >> 64;
