@@ -40,3 +40,8 @@ pub use predicates::{
     try_insphere, try_orient2d, try_orient3d, try_same_side, try_side_of_plane,
 };
 pub use sign::Sign;
+
+// The README's examples are compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
