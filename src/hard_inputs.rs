@@ -363,8 +363,17 @@ fn pow2(k: i64) -> f64 {
     f64::from_bits(((k + 1023) as u64) << 52)
 }
 
-/// The float `n` representable steps away from `x` (finite results only).
-fn step_ulps(x: f64, n: i64) -> f64 {
+/// The float `n` representable steps away from `x` (negative `n` steps down),
+/// crossing zero as the number line does. Saturates at the ends of the
+/// ordering; a step past the largest finite value gives an infinity, which
+/// callers that need finite values must avoid.
+///
+/// ```
+/// use exactray::hard_inputs::step_ulps;
+/// assert_eq!(step_ulps(1.0, 1), 1.0 + f64::EPSILON);
+/// assert_eq!(step_ulps(0.0, -1), -f64::from_bits(1));
+/// ```
+pub fn step_ulps(x: f64, n: i64) -> f64 {
     // Map floats onto integers monotonically, -0.0 and 0.0 both to 0, so
     // stepping crosses zero correctly.
     let bits = x.to_bits() as i64;
@@ -373,7 +382,7 @@ fn step_ulps(x: f64, n: i64) -> f64 {
     } else {
         bits
     };
-    let moved = ordered.wrapping_add(n);
+    let moved = ordered.saturating_add(n);
     f64::from_bits(if moved < 0 {
         i64::MIN.wrapping_sub(moved)
     } else {

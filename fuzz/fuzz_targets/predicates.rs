@@ -15,7 +15,7 @@
 #![no_main]
 
 use arbitrary::{Arbitrary, Result, Unstructured};
-use exactray::hard_inputs::{self, InputClass, SplitMix64};
+use exactray::hard_inputs::{self, InputClass, SplitMix64, step_ulps};
 use exactray::inputs::{
     IncircleInput, InsphereInput, Orient2dInput, Orient3dInput, PlaneSideInput,
     finite_f64_from_bits,
@@ -135,22 +135,6 @@ fn flat2(p: &[DVec2]) -> Vec<f64> {
 
 fn flat3(p: &[DVec3]) -> Vec<f64> {
     p.iter().flat_map(|v| v.to_array()).collect()
-}
-
-/// The float `n` representable steps from `x`, through zero (finite `x`).
-fn step_ulps(x: f64, n: i64) -> f64 {
-    let bits = x.to_bits() as i64;
-    let ordered = if bits < 0 {
-        i64::MIN.wrapping_sub(bits)
-    } else {
-        bits
-    };
-    let moved = ordered.saturating_add(n);
-    f64::from_bits(if moved < 0 {
-        i64::MIN.wrapping_sub(moved)
-    } else {
-        moved
-    } as u64)
 }
 
 /// `2^k` as an exact factor pair, so `x * a * b` rounds once.
