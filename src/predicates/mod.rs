@@ -30,23 +30,27 @@
 //!
 //! # How exactness is kept cheap
 //! Every predicate runs a ladder of stages, each named for what it
-//! guarantees, and stops at the first one that can certify the sign:
+//! guarantees, and stops at the first one that can certify the sign. In the
+//! order they are tried:
 //! 1. **filtered**: the plain `f64` determinant and an error bound computed
 //!    beside it (Shewchuk's stage A bound, widened by an absolute term so
 //!    that it holds under underflow too; overflow makes the bound infinite
 //!    and the stage declines). Answers almost all ordinary inputs.
-//! 2. **small-integer exact**: when each input coordinate is an integer
+//! 2. **scaled filter**, tried here only when stage 1 declined because of
+//!    range (underflow or overflow): inputs scaled by powers of two so that
+//!    the largest is near 1, with an absolute term in the error bound for
+//!    what the scaling flushed towards zero. Answers tiny, huge and mixed
+//!    magnitudes that are not near-degenerate.
+//! 3. **small-integer exact**: when each input coordinate is an integer
 //!    multiple of a common power of two that leaves it 62 bits or fewer, the
 //!    determinant is evaluated exactly in 64/128/256/320-bit integers.
 //!    Answers degenerate and near-degenerate inputs, and tiny or huge ones.
-//! 3. **adaptive**: Shewchuk's adaptive stages (the `robust` crate) on inputs
+//! 4. **adaptive**: Shewchuk's adaptive stages (the `robust` crate) on inputs
 //!    scaled by a power of two, only when the exponent spread proves that no
 //!    step of that arithmetic underflows or overflows.
-//! 4. **scaled filter**: inputs scaled by powers of two so that the largest
-//!    is near 1, with an absolute term in the error bound for what the
-//!    scaling flushed towards zero. Answers mixed magnitudes that are not
-//!    near-degenerate.
-//! 5. **big-integer exact**: fixed-capacity integers on the stack (no
+//! 5. **scaled filter** again, when stage 1 declined on precision rather
+//!    than range and stages 3 and 4 could not run.
+//! 6. **big-integer exact**: fixed-capacity integers on the stack (no
 //!    allocation) holding every coordinate at the finest common binary
 //!    exponent. Always exact, used only when every other stage declined.
 //!
