@@ -17,6 +17,8 @@ mod oracle;
 
 #[path = "report/framework.rs"]
 mod framework;
+#[path = "report/heap.rs"]
+mod heap;
 #[path = "report/output.rs"]
 mod output;
 #[path = "report/plot.rs"]
@@ -30,6 +32,10 @@ mod targets;
 mod incircle;
 #[path = "report/insphere.rs"]
 mod insphere;
+#[path = "report/nearest.rs"]
+mod nearest;
+#[path = "report/nearest_build.rs"]
+mod nearest_build;
 #[path = "report/orient2d.rs"]
 mod orient2d;
 #[path = "report/orient3d.rs"]
@@ -50,6 +56,8 @@ const FAMILIES: &[(&str, Family)] = &[
     ("incircle", |cfg| incircle::family().run(cfg)),
     ("insphere", |cfg| insphere::family().run(cfg)),
     ("plane_side", |cfg| plane_side::family().run(cfg)),
+    ("nearest", nearest::run),
+    ("nearest_build", nearest_build::run),
 ];
 
 fn main() -> std::io::Result<()> {
@@ -95,20 +103,34 @@ fn main() -> std::io::Result<()> {
 
     let table = output::table(&rows);
     let (targets, met, total) = targets::check(&rows);
+    let notes: String = families
+        .iter()
+        .flat_map(|(name, _)| framework::notes(name))
+        .map(|n| n + "\n\n")
+        .collect();
     println!("{table}");
     println!("Targets met: {met} of {total}\n\n{targets}");
+    if !notes.is_empty() {
+        println!("{notes}");
+    }
 
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/report");
     std::fs::create_dir_all(&dir)?;
     let mut md = format!(
         "# exactray: speed against error\n\n{} run: {} cases checked against the exact answer per family and inputs; \
-         ns/op is the median of {} timed loops over {} cases. `vs naive` and `vs robust` divide a row's time by \
+         ns/op is the median of {} timed loops over {} cases (the sign families; families sized otherwise say how \
+         under Notes). `vs naive` and `vs robust` divide a row's time by \
          that method's on the same family and inputs, measured in the same run.\n\n{table}\n\
-         ## Targets\n\n{met} of {total} met.\n\n{targets}\n## Plots\n\n",
+         ## Targets\n\n{met} of {total} met.\n\n{targets}\n{}## Plots\n\n",
         if quick { "Quick" } else { "Full" },
         cfg.cases,
         cfg.reps,
         cfg.working_set,
+        if notes.is_empty() {
+            String::new()
+        } else {
+            format!("## Notes\n\n{notes}")
+        },
     );
     for (name, _) in &families {
         let family_rows: Vec<&Row> = rows.iter().filter(|r| r.family == *name).collect();

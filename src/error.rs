@@ -21,6 +21,23 @@ pub enum InputError {
         /// signature (`"a"`, `"b"`, ...).
         argument: &'static str,
     },
+    /// A radius or distance bound is negative or NaN.
+    InvalidRadius {
+        /// The parameter name of the offending argument.
+        argument: &'static str,
+    },
+    /// Two slices that must have the same length do not.
+    LengthMismatch {
+        /// The length the first slice named in the function's docs has.
+        expected: usize,
+        /// The length of the other slice.
+        got: usize,
+    },
+    /// More items than the structure can index (its documented maximum).
+    TooManyItems {
+        /// The largest number of items accepted.
+        max: usize,
+    },
 }
 
 impl fmt::Display for InputError {
@@ -29,6 +46,13 @@ impl fmt::Display for InputError {
             InputError::NonFinite { argument } => {
                 write!(f, "argument `{argument}` has a NaN or infinite coordinate")
             }
+            InputError::InvalidRadius { argument } => {
+                write!(f, "argument `{argument}` is a negative or NaN radius")
+            }
+            InputError::LengthMismatch { expected, got } => {
+                write!(f, "slice lengths differ: {expected} and {got}")
+            }
+            InputError::TooManyItems { max } => write!(f, "more than {max} items"),
         }
     }
 }

@@ -24,6 +24,8 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+#[cfg(feature = "alloc")]
+pub mod bvh;
 pub mod error;
 pub mod hard_inputs;
 pub mod inputs;
@@ -33,6 +35,8 @@ pub mod sign;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 
+#[cfg(feature = "alloc")]
+pub use bvh::SphereBvh;
 pub use error::InputError;
 pub use point::{IntoDVec2, IntoDVec3};
 pub use predicates::{

@@ -8,13 +8,19 @@
 //! [`KINDS`]: adding a kind means writing its checker and filling in the row.
 //! Kinds listed without a checker are counted and reported as skipped, so a
 //! fixture nobody checks is visible rather than silently passing.
+//!
+//! Most kinds have one case per line. A `nearest` file is one point set (its
+//! `p` lines) and queries against it (its `q` lines), so its checkers take
+//! the whole file: see [`Check`].
 
 mod common;
 
 use common::oracle;
+use exactray::SphereBvh;
+use exactray::bvh::Nearest;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::panic::catch_unwind;
+use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 
 /// How many mismatches and problems a failing test lists in full.
@@ -30,6 +36,25 @@ enum Verdict {
 /// cannot be parsed.
 type Checker = fn(&[&str]) -> Result<Verdict, String>;
 
+/// What running one case gave: a verdict, a line that cannot be parsed
+/// (`Ok(Err)`), or a panic (`Err`).
+type Outcome = std::thread::Result<Result<Verdict, String>>;
+
+/// Runs a whole file: gets the fields of every line that is not a comment or
+/// blank, in order, and returns an outcome for each case as (position in
+/// that list, outcome). Lines that are not cases themselves (a nearest
+/// file's points) get an outcome only when they cannot be parsed.
+type FileChecker = fn(&[Vec<&str>]) -> Vec<(usize, Outcome)>;
+
+#[derive(Clone, Copy)]
+enum Check {
+    /// Each line is one case, independent of the others.
+    PerLine(Checker),
+    /// The lines depend on each other (a point set and queries against it).
+    WholeFile(FileChecker),
+}
+use Check::{PerLine, WholeFile};
+
 struct Kind {
     name: &'static str,
     /// Fewest fields a line of this kind can have. Lines of kinds without a
@@ -37,30 +62,30 @@ struct Kind {
     /// its kind is checked.
     min_fields: usize,
     /// Runs the crate's implementation; `None` until an issue implements it.
-    predicate: Option<Checker>,
+    predicate: Option<Check>,
     /// Runs the exact oracle of `tests/common/oracle.rs`; agreement with
     /// CGAL validates the fixtures and the oracle against each other.
-    oracle: Option<Checker>,
+    oracle: Option<Check>,
 }
 
 const KINDS: &[Kind] = &[
     Kind {
         name: "orient2d",
         min_fields: 7,
-        predicate: Some(crate_orient2d),
-        oracle: Some(oracle_orient2d),
+        predicate: Some(PerLine(crate_orient2d)),
+        oracle: Some(PerLine(oracle_orient2d)),
     },
     Kind {
         name: "orient3d",
         min_fields: 13,
-        predicate: Some(crate_orient3d),
-        oracle: Some(oracle_orient3d),
+        predicate: Some(PerLine(crate_orient3d)),
+        oracle: Some(PerLine(oracle_orient3d)),
     },
     Kind {
         name: "plane_side",
         min_fields: 16,
-        predicate: Some(crate_plane_side),
-        oracle: Some(oracle_plane_side),
+        predicate: Some(PerLine(crate_plane_side)),
+        oracle: Some(PerLine(oracle_plane_side)),
     },
     Kind {
         name: "ray_sphere",
@@ -89,8 +114,8 @@ const KINDS: &[Kind] = &[
     Kind {
         name: "nearest",
         min_fields: 4,
-        predicate: None,
-        oracle: None,
+        predicate: Some(WholeFile(crate_nearest)),
+        oracle: Some(WholeFile(oracle_nearest)),
     },
 ];
 
@@ -193,6 +218,150 @@ fn oracle_plane_side(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_sign_case::<15>(f)?;
     let got = oracle::plane_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
     Ok(compare_signs(want, got))
+}
+
+// ---------------------------------------------------------------------------
+// Nearest: one point set per file
+
+/// A nearest file: `p x y z` lines (the points, indexed from 0 in order) and
+/// `q x y z i [i ...]` lines (a query and every index at exactly the
+/// smallest distance, strictly ascending).
+struct NearestFile {
+    points: Vec<[f64; 3]>,
+    /// (position among the file's lines, query, expected indices).
+    queries: Vec<(usize, [f64; 3], Vec<usize>)>,
+}
+
+fn parse_point3(fields: &[&str]) -> Result<[f64; 3], String> {
+    Ok([
+        parse_f64(fields[0])?,
+        parse_f64(fields[1])?,
+        parse_f64(fields[2])?,
+    ])
+}
+
+/// The file, or the first line that cannot be parsed with why.
+fn parse_nearest(lines: &[Vec<&str>]) -> Result<NearestFile, (usize, String)> {
+    let mut file = NearestFile {
+        points: Vec::new(),
+        queries: Vec::new(),
+    };
+    for (i, f) in lines.iter().enumerate() {
+        match f[0] {
+            "p" if f.len() == 4 => file.points.push(parse_point3(&f[1..]).map_err(|e| (i, e))?),
+            "p" => return Err((i, format!("a p line has 4 fields, found {}", f.len()))),
+            "q" if f.len() >= 5 => {
+                let q = parse_point3(&f[1..4]).map_err(|e| (i, e))?;
+                let mut want = Vec::with_capacity(f.len() - 4);
+                for field in &f[4..] {
+                    let index: usize = field
+                        .parse()
+                        .map_err(|e| (i, format!("bad index {field:?}: {e}")))?;
+                    if want.last().is_some_and(|&last| last >= index) {
+                        return Err((i, "indices must be strictly ascending".to_string()));
+                    }
+                    want.push(index);
+                }
+                file.queries.push((i, q, want));
+            }
+            "q" => {
+                return Err((
+                    i,
+                    format!("a q line has at least 5 fields, found {}", f.len()),
+                ));
+            }
+            tag => return Err((i, format!("expected a p or q line, found {tag:?}"))),
+        }
+    }
+    // Indices refer to the whole set, so they are checked once it is read.
+    for (i, _, want) in &file.queries {
+        if let Some(&bad) = want.iter().find(|&&index| index >= file.points.len()) {
+            let n = file.points.len();
+            return Err((*i, format!("index {bad} but the file has {n} points")));
+        }
+    }
+    Ok(file)
+}
+
+/// Runs `check` on every query, catching panics per query.
+fn nearest_queries(
+    lines: &[Vec<&str>],
+    check: impl Fn(&NearestFile, [f64; 3], &[usize]) -> Verdict,
+) -> Vec<(usize, Outcome)> {
+    let file = match parse_nearest(lines) {
+        Ok(file) => file,
+        Err((i, e)) => return vec![(i, Ok(Err(e)))],
+    };
+    file.queries
+        .iter()
+        .map(|(i, q, want)| {
+            let outcome = catch_unwind(AssertUnwindSafe(|| Ok(check(&file, *q, want))));
+            (*i, outcome)
+        })
+        .collect()
+}
+
+fn one_of(want: &[usize]) -> String {
+    if want.len() == 1 {
+        want[0].to_string()
+    } else {
+        format!("one of {want:?}")
+    }
+}
+
+/// `nearest(q)` and `nearest_k(q)` with k = 1 must return one of the listed
+/// indices (and that index's point).
+fn crate_nearest(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    // Built once per file, on first use: a file that does not parse has none.
+    let bvh = std::cell::OnceCell::new();
+    nearest_queries(lines, |file, q, want| {
+        let bvh: &SphereBvh = bvh
+            .get_or_init(|| SphereBvh::from_points(&file.points).expect("the points are finite"));
+        let mismatch = |got: String| Verdict::Mismatch {
+            expected: one_of(want),
+            got,
+        };
+        let Some(hit) = bvh.nearest(q) else {
+            return mismatch("nearest: None".to_string());
+        };
+        if !want.contains(&hit.index) {
+            return mismatch(format!("nearest: {}", hit.index));
+        }
+        if hit.point.to_array() != file.points[hit.index] {
+            return mismatch(format!("nearest: {} with point {}", hit.index, hit.point));
+        }
+        let mut out = [Nearest {
+            index: usize::MAX,
+            point: glam::DVec3::NAN,
+            distance: f64::NAN,
+        }];
+        let n = bvh.nearest_k(q, &mut out);
+        if n != 1 || !want.contains(&out[0].index) {
+            return mismatch(format!(
+                "nearest_k (k = 1): {n} answers, index {}",
+                out[0].index
+            ));
+        }
+        Verdict::Pass
+    })
+}
+
+/// Every point at exactly the smallest distance, by the num-bigint oracle:
+/// the listed indices must be exactly those.
+fn oracle_nearest(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let set = std::cell::OnceCell::new();
+    nearest_queries(lines, |file, q, want| {
+        let set = set.get_or_init(|| oracle::ExactPointSet::new(&file.points));
+        let got = set.nearest(q);
+        if got == want {
+            Verdict::Pass
+        } else {
+            Verdict::Mismatch {
+                expected: format!("{want:?}"),
+                got: format!("{got:?}"),
+            }
+        }
+    })
 }
 
 // ---------------------------------------------------------------------------
@@ -323,11 +492,41 @@ impl Report {
         }
         panic!("{what} failed:\n{msg}");
     }
+
+    /// Records the outcome of the case on `line`.
+    fn record(&mut self, kind: &'static str, line: &Line, outcome: Outcome) {
+        let at = &line.at;
+        match outcome {
+            Ok(Ok(verdict)) => {
+                *self.checked.entry(kind).or_default() += 1;
+                if let Verdict::Mismatch { expected, got } = verdict {
+                    let section = &line.section;
+                    let message = format!(
+                        "{at} [{section}]: expected {expected}, got {got}: {}",
+                        line.text
+                    );
+                    self.mismatch(kind, section, message);
+                }
+            }
+            Ok(Err(e)) => self.problems.push(format!("{at}: {e}")),
+            Err(_) => self.problems.push(format!("{at}: panicked: {}", line.text)),
+        }
+    }
+}
+
+/// A line that is not a comment or blank.
+struct Line<'a> {
+    /// `file:line`, as reported.
+    at: String,
+    /// The section it is in (the generator's `# section NAME: ...` lines).
+    section: String,
+    text: &'a str,
+    fields: Vec<&'a str>,
 }
 
 /// Runs the checker that `select` picks from each line's kind over every
 /// fixture line; kinds without one are counted as skipped.
-fn run(select: fn(&Kind) -> Option<Checker>) -> Report {
+fn run(select: fn(&Kind) -> Option<Check>) -> Report {
     let mut report = Report::default();
     for path in fixture_files() {
         let file = shown(&path);
@@ -347,6 +546,7 @@ fn run(select: fn(&Kind) -> Option<Checker>) -> Report {
         };
         let checker = select(kind);
         let mut section = String::from("no section");
+        let mut lines = Vec::new();
         for (index, line) in text.lines().enumerate() {
             let at = format!("{file}:{}", index + 1);
             if let Some(comment) = line.strip_prefix('#') {
@@ -367,7 +567,7 @@ fn run(select: fn(&Kind) -> Option<Checker>) -> Report {
                     .push(format!("{at}: fields must be separated by single spaces"));
                 continue;
             }
-            let Some(check) = checker else {
+            if checker.is_none() {
                 if fields.len() < kind.min_fields {
                     report.problems.push(format!(
                         "{at}: {} fields, a {} line has at least {}",
@@ -378,19 +578,33 @@ fn run(select: fn(&Kind) -> Option<Checker>) -> Report {
                 }
                 *report.skipped.entry(kind.name).or_default() += 1;
                 continue;
-            };
+            }
+            lines.push(Line {
+                at,
+                section: section.clone(),
+                text: line,
+                fields,
+            });
+        }
+        match checker {
+            None => {}
             // A panic is reported against its line rather than aborting the run.
-            match catch_unwind(|| check(&fields)) {
-                Ok(Ok(verdict)) => {
-                    *report.checked.entry(kind.name).or_default() += 1;
-                    if let Verdict::Mismatch { expected, got } = verdict {
-                        let message =
-                            format!("{at} [{section}]: expected {expected}, got {got}: {line}");
-                        report.mismatch(kind.name, &section, message);
-                    }
+            Some(PerLine(check)) => {
+                for line in &lines {
+                    let outcome = catch_unwind(|| check(&line.fields));
+                    report.record(kind.name, line, outcome);
                 }
-                Ok(Err(e)) => report.problems.push(format!("{at}: {e}")),
-                Err(_) => report.problems.push(format!("{at}: panicked: {line}")),
+            }
+            Some(WholeFile(check)) => {
+                let fields: Vec<Vec<&str>> = lines.iter().map(|l| l.fields.clone()).collect();
+                match catch_unwind(|| check(&fields)) {
+                    Ok(outcomes) => {
+                        for (i, outcome) in outcomes {
+                            report.record(kind.name, &lines[i], outcome);
+                        }
+                    }
+                    Err(_) => report.problems.push(format!("{file}: panicked")),
+                }
             }
         }
     }
@@ -446,4 +660,58 @@ fn malformed_lines_are_rejected() {
         crate_orient2d(&fields("0 0 1 0 0 1 +1")).is_err(),
         "bad sign"
     );
+}
+
+#[test]
+fn nearest_files_are_parsed_strictly() {
+    let lines = |text: &'static str| -> Vec<Vec<&'static str>> {
+        text.lines().map(|l| l.split(' ').collect()).collect()
+    };
+    let outcomes = |check: FileChecker, text: &'static str| -> Vec<(usize, Option<bool>)> {
+        check(&lines(text))
+            .into_iter()
+            .map(|(i, o)| match o {
+                Ok(Ok(Verdict::Pass)) => (i, Some(true)),
+                Ok(Ok(Verdict::Mismatch { .. })) => (i, Some(false)),
+                Ok(Err(_)) | Err(_) => (i, None),
+            })
+            .collect()
+    };
+    // Points 0 and 2 are at distance 1 from the first query, point 1 at 1.5.
+    let good = "p 0 0 1\np 0 0 -1.5\np 1 0 0\nq 0 0 0 0 2\nq 0 0 -2 1";
+    for check in [crate_nearest as FileChecker, oracle_nearest] {
+        assert_eq!(outcomes(check, good), [(3, Some(true)), (4, Some(true))]);
+        // A wrong list: the crate's answer is not in it, or the oracle's differs.
+        assert_eq!(
+            outcomes(check, "p 0 0 1\np 0 0 -1.5\nq 0 0 0 1"),
+            [(2, Some(false))]
+        );
+        for (bad, line) in [
+            ("p 0 0\nq 0 0 0 0", 0),              // too few fields
+            ("p 0 0 1 2\nq 0 0 0 0", 0),          // too many
+            ("p 0 0 x\nq 0 0 0 0", 0),            // bad number
+            ("p 0 0 inf\nq 0 0 0 0", 0),          // non-finite
+            ("p 0 0 1\nq 0 0 0", 1),              // no index
+            ("p 0 0 1\nq 0 0 0 1", 1),            // index out of range
+            ("p 0 0 1\np 0 0 1\nq 0 0 0 1 0", 2), // not ascending
+            ("p 0 0 1\np 0 0 1\nq 0 0 0 0 0", 2), // repeated
+            ("p 0 0 1\nq 0 0 0 -1", 1),           // negative index
+            ("p 0 0 1\nr 0 0 0 0", 1),            // unknown line
+        ] {
+            assert_eq!(outcomes(check, bad), [(line, None)], "{bad:?}");
+        }
+    }
+    // The oracle ties exactly, across magnitudes.
+    let set =
+        oracle::ExactPointSet::new(&[[1e-300, 0.0, 0.0], [0.0, 0.0, -1e-300], [1.0, 0.0, 0.0]]);
+    assert_eq!(set.nearest([0.0; 3]), [0, 1]);
+    assert_eq!(set.nearest([0.0, 0.0, -5e-324]), [1]);
+    assert_eq!(set.nearest([1.0, 5e-324, 0.0]), [2]);
+    // Squared distances around 1e600, which overflow f64.
+    let set =
+        oracle::ExactPointSet::new(&[[1e300, 0.0, 0.0], [0.0, -1e300, 0.0], [3.0, 1e300, 0.0]]);
+    assert_eq!(set.nearest([0.0; 3]), [0, 1]);
+    assert_eq!(set.nearest([0.0, 0.0, 1e300]), [0, 1]);
+    assert_eq!(set.nearest([5e-324, 0.0, 0.0]), [0]);
+    assert_eq!(set.nearest([1.5, 1e300, 0.0]), [2]);
 }

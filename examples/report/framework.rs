@@ -3,10 +3,13 @@
 
 use exactray::hard_inputs::SplitMix64;
 use std::hint::black_box;
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// How much work a run does.
 pub struct Config {
+    /// A `--quick` run: families that size their own work scale it down.
+    pub quick: bool,
     /// Cases checked against the exact answer per (family, inputs).
     pub cases: usize,
     /// Cases in each timed loop: few enough to stay in cache.
@@ -21,6 +24,7 @@ impl Config {
     pub fn new(quick: bool) -> Self {
         if quick {
             Config {
+                quick,
                 cases: 50_000,
                 working_set: 2048,
                 reps: 7,
@@ -28,6 +32,7 @@ impl Config {
             }
         } else {
             Config {
+                quick,
                 cases: 200_000,
                 working_set: 2048,
                 reps: 21,
@@ -145,4 +150,24 @@ pub fn median(mut v: Vec<f64>) -> f64 {
     } else {
         0.5 * (v[n / 2 - 1] + v[n / 2])
     }
+}
+
+/// Notes that families add beside their rows (how a figure was measured, a
+/// side table of figures the rows have no field for), in the order added.
+static NOTES: Mutex<Vec<(&'static str, String)>> = Mutex::new(Vec::new());
+
+/// Adds a markdown note for `family`; the report prints it after the targets.
+pub fn note(family: &'static str, text: String) {
+    NOTES.lock().expect("notes lock").push((family, text));
+}
+
+/// The notes added for `family`, in order.
+pub fn notes(family: &str) -> Vec<String> {
+    NOTES
+        .lock()
+        .expect("notes lock")
+        .iter()
+        .filter(|(f, _)| *f == family)
+        .map(|(_, t)| t.clone())
+        .collect()
 }

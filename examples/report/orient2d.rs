@@ -2,7 +2,7 @@
 
 use crate::framework::method;
 use crate::oracle;
-use crate::signs::{SignFamily, coord, sign_of};
+use crate::signs::{SignFamily, batch, coord, sign_of};
 use exactray::hard_inputs::orient2d_case;
 use glam::DVec2;
 
@@ -17,6 +17,7 @@ pub fn family() -> SignFamily<Case> {
             method("exactray", |&[a, b, c]: &Case| {
                 exactray::orient2d(a, b, c).as_i8()
             }),
+            batch("exactray-batch", exactray::predicates::orient2d_many),
             method("naive", |&[a, b, c]: &Case| {
                 sign_of((b - a).perp_dot(c - a))
             }),

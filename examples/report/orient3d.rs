@@ -3,7 +3,7 @@
 
 use crate::framework::method;
 use crate::oracle;
-use crate::signs::{SignFamily, coord3, minus_sign_of, sign_of};
+use crate::signs::{SignFamily, batch, coord3, minus_sign_of, sign_of};
 use exactray::hard_inputs::orient3d_case;
 use glam::DVec3;
 
@@ -31,6 +31,7 @@ pub fn family() -> SignFamily<Case> {
             method("exactray", |&[a, b, c, d]: &Case| {
                 exactray::orient3d(a, b, c, d).as_i8()
             }),
+            batch("exactray-batch", exactray::predicates::orient3d_many),
             method("naive", |&[a, b, c, d]: &Case| naive(a, b, c, d)),
             method("robust", |&[a, b, c, d]: &Case| robust(a, b, c, d)),
             method("geometry-predicates", |&[a, b, c, d]: &Case| {

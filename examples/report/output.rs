@@ -9,7 +9,8 @@ pub fn ratio_to(rows: &[Row], row: &Row, baseline: &str) -> Option<f64> {
         .map(|b| row.ns_per_op / b.ns_per_op)
 }
 
-fn ns(v: f64) -> String {
+/// A time in ns with as many digits as matter.
+pub fn ns(v: f64) -> String {
     if v < 10.0 {
         format!("{v:.2}")
     } else if v < 1000.0 {

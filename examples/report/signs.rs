@@ -2,7 +2,10 @@
 //! against the exact oracle.
 
 use crate::framework::{Config, Measure, Row, time_methods};
+use exactray::Sign;
 use exactray::hard_inputs::{InputClass, SplitMix64};
+use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 /// What a float method's NaN counts as: never equal to an exact sign.
 pub const NAN: i8 = i8::MIN;
@@ -26,6 +29,43 @@ pub fn minus_sign_of(v: f64) -> i8 {
         NAN => NAN,
         s => -s,
     }
+}
+
+/// A predicate's batch variant (`exactray::predicates::orient2d_many`, ...)
+/// as a [`Measure`]: the timed loop answers the whole slice of cases in one
+/// call per iteration, as a caller with many cases would.
+pub struct Batch<C> {
+    name: &'static str,
+    f: fn(&[C], &mut [Sign]) -> usize,
+}
+
+impl<C: Clone> Measure<C, i8> for Batch<C> {
+    fn name(&self) -> &'static str {
+        self.name
+    }
+
+    fn answer(&self, case: &C) -> i8 {
+        let mut out = [Sign::Zero];
+        (self.f)(std::slice::from_ref(case), &mut out);
+        out[0].as_i8()
+    }
+
+    fn run_loop(&self, cases: &[C], iters: u64) -> Duration {
+        let mut out = vec![Sign::Zero; cases.len()];
+        let start = Instant::now();
+        for _ in 0..iters {
+            black_box((self.f)(black_box(cases), black_box(&mut out[..])));
+        }
+        start.elapsed()
+    }
+}
+
+/// A boxed [`Batch`], for a family's list of methods.
+pub fn batch<C: Clone + 'static>(
+    name: &'static str,
+    f: fn(&[C], &mut [Sign]) -> usize,
+) -> Box<dyn Measure<C, i8>> {
+    Box::new(Batch { name, f })
 }
 
 /// A sign family: how to draw its cases, its exact answer, its methods.

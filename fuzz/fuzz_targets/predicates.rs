@@ -241,6 +241,10 @@ fn check(pred: Pred, c: &[f64]) {
             }
             let want = Sign::from_i8(oracle::orient2d(a2(0), a2(1), a2(2)));
             assert_eq!(input.try_eval(), Ok(want), "{}", ctx());
+            // The batch variant, over enough copies to fill its blocks.
+            let mut out = [Sign::Zero; 9];
+            exactray::predicates::orient2d_many(&[[p2(0), p2(1), p2(2)]; 9], &mut out);
+            assert_eq!(out, [want; 9], "batch: {}", ctx());
             assert_eq!(
                 exactray::orient2d(p2(1), p2(0), p2(2)),
                 -want,
@@ -268,6 +272,9 @@ fn check(pred: Pred, c: &[f64]) {
             }
             let want = Sign::from_i8(oracle::orient3d(a3(0), a3(1), a3(2), a3(3)));
             assert_eq!(input.try_eval(), Ok(want), "{}", ctx());
+            let mut out = [Sign::Zero; 9];
+            exactray::predicates::orient3d_many(&[[p3(0), p3(1), p3(2), p3(3)]; 9], &mut out);
+            assert_eq!(out, [want; 9], "batch: {}", ctx());
             assert_eq!(
                 exactray::orient3d(p3(3), p3(1), p3(2), p3(0)),
                 -want,

@@ -50,28 +50,46 @@
 //!    step of that arithmetic underflows or overflows.
 //! 5. **scaled filter** again, when stage 1 declined on precision rather
 //!    than range and stages 3 and 4 could not run.
-//! 6. **big-integer exact**: fixed-capacity integers on the stack (no
-//!    allocation) holding every coordinate at the finest common binary
-//!    exponent. Always exact, used only when every other stage declined.
+//! 6. **big-integer exact**: always exact, used only when every other stage
+//!    declined. orient2d and orient3d first try sparse exact terms: each
+//!    coordinate difference as at most two `f64` significands with explicit
+//!    exponents, the determinant as at most 48 exact products, its sign from
+//!    the top cluster of terms that does not cancel. Otherwise (and for
+//!    incircle and insphere) fixed-capacity integers on the stack (no
+//!    allocation) hold every coordinate at the finest common binary
+//!    exponent; their products skip zero limbs.
+//!
+//! # Many cases at once
+//! [`orient2d_many`] and [`orient3d_many`] are the way to evaluate many
+//! predicates: they answer a slice of cases with the same results as the
+//! scalar functions, running the filter over blocks of cases in vector
+//! instructions (AVX2 when the CPU has it and `std` is enabled).
 //!
 //! References: J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic
 //! and Fast Robust Geometric Predicates", Discrete & Computational Geometry
 //! 18 (1997); A. Meyer and S. Pion, "FPG: A code generator for fast and
 //! certified geometric predicates", RNC 2008.
 
-mod grain;
+mod batch;
+pub(crate) mod distance;
+pub(crate) mod grain;
 mod incircle;
 mod insphere;
 mod orient2d;
 mod orient3d;
 pub mod plane_side;
+mod sparse;
 mod wide;
 
 use crate::error::InputError;
 use crate::point::{IntoDVec2, IntoDVec3};
 use crate::sign::Sign;
+use core::cmp::Ordering;
 use glam::{DVec2, DVec3};
 
+pub(crate) use distance::cmp_lengths;
+
+pub use batch::{BLOCK, orient2d_many, orient3d_many};
 pub use plane_side::{SideRelation, same_side, side_of_plane, try_same_side, try_side_of_plane};
 
 /// Checks that every coordinate of every named point is finite.
@@ -277,4 +295,41 @@ pub fn try_insphere(
     );
     check_finite3(&[("a", a), ("b", b), ("c", c), ("d", d), ("e", e)])?;
     Ok(insphere::insphere(a, b, c, d, e))
+}
+
+/// Exact comparison of distances: the ordering of `|p - q|` against
+/// `|r - q|`, for every finite input (CGAL's `compare_distance_to_point`).
+///
+/// `Less` when `p` is strictly closer to `q` than `r` is, `Equal` on an exact
+/// tie. Squared distances that underflow or overflow in `f64` are compared
+/// exactly all the same. A NaN or infinite coordinate gives `Equal` (see
+/// [`try_compare_distance`]).
+///
+/// ```
+/// use exactray::predicates::compare_distance;
+/// use core::cmp::Ordering;
+/// let q = [0.0, 0.0, 0.0];
+/// assert_eq!(compare_distance(q, [3.0, 4.0, 0.0], [0.0, 0.0, 5.0]), Ordering::Equal);
+/// // One ulp farther: f64 squares would tie, the exact comparison does not.
+/// assert_eq!(compare_distance(q, [1.0 + f64::EPSILON, 0.0, 0.0], [0.0, 1.0, 0.0]), Ordering::Greater);
+/// ```
+#[inline]
+pub fn compare_distance(q: impl IntoDVec3, p: impl IntoDVec3, r: impl IntoDVec3) -> Ordering {
+    let q = q.into_dvec3();
+    cmp_lengths(p.into_dvec3(), q, r.into_dvec3(), q)
+        .as_i8()
+        .cmp(&0)
+}
+
+/// [`compare_distance`] that rejects a NaN or infinite coordinate with
+/// [`InputError::NonFinite`] naming the argument.
+#[inline]
+pub fn try_compare_distance(
+    q: impl IntoDVec3,
+    p: impl IntoDVec3,
+    r: impl IntoDVec3,
+) -> Result<Ordering, InputError> {
+    let (q, p, r) = (q.into_dvec3(), p.into_dvec3(), r.into_dvec3());
+    check_finite3(&[("q", q), ("p", p), ("r", r)])?;
+    Ok(compare_distance(q, p, r))
 }

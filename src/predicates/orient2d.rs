@@ -3,7 +3,9 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
+use super::batch::Lanes;
 use super::grain::{Grain, TINY, in_range, scale_pow2, split, to_integer_i64, unit_scale};
+use super::sparse;
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec2;
@@ -11,7 +13,7 @@ use glam::DVec2;
 /// Shewchuk's `ccwerrboundA = (3 + 16 eps) eps`, `eps = 2^-53`: with no
 /// underflow, `|det_computed - det| <= A * (|detleft| + |detright|)`
 /// (Shewchuk 1997, section 4.3, orient2d stage A).
-const A: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
+pub(super) const A: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
 
 /// Absolute term for underflow. A product that lands below `2^-1022` is off
 /// by at most `2^-1075` instead of relatively; there are two products, and
@@ -19,7 +21,7 @@ const A: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
 /// `3 * 2^-1075 < 2^-1073`; `2^-1071` leaves a factor 4 to spare. Overflow
 /// needs no term: it makes `detsum` infinite (or the determinant NaN) and
 /// the comparisons fail.
-const UNDERFLOW_SLACK: f64 = 8.0 * TINY;
+pub(super) const UNDERFLOW_SLACK: f64 = 8.0 * TINY;
 
 /// Span (bits between the finest and coarsest set bit, per axis) up to which
 /// the integer stage fits: coordinates are integers below `2^62`, their
@@ -54,18 +56,59 @@ pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Sign {
 /// near-degeneracy.
 #[inline(always)]
 fn filtered(a: DVec2, b: DVec2, c: DVec2, extra_slack: f64) -> Result<Sign, f64> {
-    let detleft = (a.x - c.x) * (b.y - c.y);
-    let detright = (a.y - c.y) * (b.x - c.x);
+    let (det, detsum, certified) = stage_a(a, b, c, extra_slack);
+    if certified {
+        Ok(Sign::of_f64(det))
+    } else {
+        Err(detsum)
+    }
+}
+
+/// Stage 1 without branches: the `f64` determinant, its permanent
+/// `detsum`, and whether the bound certifies the determinant's sign
+/// (`false` for non-finite input).
+#[inline(always)]
+fn stage_a(a: DVec2, b: DVec2, c: DVec2, extra_slack: f64) -> (f64, f64, bool) {
+    let p = products(a, b, c);
+    let (det, detsum, margin) = stage_a_lanes(p.x, p.y);
+    (det, detsum, margin > UNDERFLOW_SLACK + extra_slack)
+}
+
+/// The two products of stage 1, `detleft` and `detright`, as one vector.
+#[inline(always)]
+pub(super) fn products(a: DVec2, b: DVec2, c: DVec2) -> DVec2 {
+    // (a.x - c.x) * (b.y - c.y) and (a.y - c.y) * (b.x - c.x).
+    let (u, v) = (a - c, b - c);
+    u * DVec2::new(v.y, v.x)
+}
+
+/// The rest of stage 1 on one case (`T = f64`) or a block of them (the
+/// batch variants), from its [`products`]: the determinant, `detsum`, and
+/// the margin `|det| - A * detsum`, which certifies the sign when it
+/// exceeds `UNDERFLOW_SLACK` (see [`certifies`]). The same operations in
+/// the same order whatever `T`, so one bound covers both.
+#[inline(always)]
+pub(super) fn stage_a_lanes<T: Lanes>(detleft: T, detright: T) -> (T, T, T) {
     let det = detleft - detright;
     let detsum = detleft.abs() + detright.abs();
     // `|det| > A * detsum + slack`, tested as a difference: the slack is
     // subnormal, and adding it would cost a microcode assist on x86 for
     // every call. `fl(x - y) > s` implies `x - y > s` for representable `s`.
-    if det.abs() - A * detsum > UNDERFLOW_SLACK + extra_slack {
-        Ok(Sign::of_f64(det))
-    } else {
-        Err(detsum)
-    }
+    let margin = det.abs() - T::splat(A) * detsum;
+    (det, detsum, margin)
+}
+
+/// Whether a margin from `stage_a_lanes` certifies the sign on unscaled
+/// input.
+#[inline(always)]
+pub(super) fn certifies(margin: f64) -> bool {
+    margin > UNDERFLOW_SLACK
+}
+
+/// Stages 2 to 5 for an input stage 1 declined, given its `detsum`.
+#[inline(always)]
+pub(super) fn declined(a: DVec2, b: DVec2, c: DVec2, detsum: f64) -> Sign {
+    exact(a, b, c, in_range(detsum))
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
@@ -81,8 +124,13 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
     let scaled_filter = |s: [DVec2; 3]| filtered(s[0], s[1], s[2], SCALED_SLACK).ok();
-    if !in_range && let Some(sign) = scaled_filter(scaled()) {
-        return sign;
+    let mut scaled_once = None;
+    if !in_range {
+        let s = scaled();
+        if let Some(sign) = scaled_filter(s) {
+            return sign;
+        }
+        scaled_once = Some(s);
     }
     if let Some(sign) = same_binade_integer(a, b, c) {
         return sign;
@@ -96,15 +144,15 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     if span <= SMALL_SPAN {
         return small_integer(a, b, c, gx.lo_min, gy.lo_min);
     }
-    let s = scaled();
     if span <= ADAPTIVE_SPAN {
+        let s = scaled_once.unwrap_or_else(scaled);
         let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
         return Sign::of_f64(robust::orient2d(p(s[0]), p(s[1]), p(s[2])));
     }
-    if in_range && let Some(sign) = scaled_filter(s) {
+    if in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
-    big_integer(a, b, c, gx.lo_min, gy.lo_min)
+    sparse::orient2d(a, b, c).unwrap_or_else(|| big_integer(a, b, c, gx.lo_min, gy.lo_min))
 }
 
 /// Stage 2, quick entry: when each axis's significands sit within 2^9 of
@@ -146,7 +194,7 @@ fn small_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
 /// Coordinates are below `2^2098` (a finite `f64` over its finest possible
 /// bit `2^-1074`), differences below `2^2099` (34 limbs) and the
 /// determinant below `2^4199` (67 limbs).
-fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
+pub(super) fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
     type D = Wide<34>;
     let dx = |p: DVec2, q: DVec2| D::from_f64(p.x, lox).sub(&D::from_f64(q.x, lox));
     let dy = |p: DVec2, q: DVec2| D::from_f64(p.y, loy).sub(&D::from_f64(q.y, loy));

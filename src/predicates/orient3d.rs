@@ -4,7 +4,9 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
+use super::batch::Lanes;
 use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
+use super::sparse;
 use super::wide::Wide;
 use crate::sign::Sign;
 use glam::DVec3;
@@ -59,30 +61,66 @@ pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
 /// error bound. `Err(permanent)` when the bound cannot certify the sign.
 #[inline(always)]
 fn filtered(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> Result<Sign, f64> {
-    let (bb, cc, dd) = (b - a, c - a, d - a);
-    let cxdy = cc.x * dd.y;
-    let dxcy = dd.x * cc.y;
-    let dxby = dd.x * bb.y;
-    let bxdy = bb.x * dd.y;
-    let bxcy = bb.x * cc.y;
-    let cxby = cc.x * bb.y;
-    let det = bb.z * (cxdy - dxcy) + cc.z * (dxby - bxdy) + dd.z * (bxcy - cxby);
-    let (bz, cz, dz) = (bb.z.abs(), cc.z.abs(), dd.z.abs());
-    let permanent = (cxdy.abs() + dxcy.abs()) * bz
-        + (dxby.abs() + bxdy.abs()) * cz
-        + (bxcy.abs() + cxby.abs()) * dz;
-    // `|det| - A * permanent > Z_SLACK * (bz + cz + dz) + UNDERFLOW_SLACK`,
-    // both sides times 2^1000: the slack constants are subnormal, and
-    // arithmetic on them costs a microcode assist on x86 on every call.
-    // Scaling the left side by a power of two is exact (an overflow to
-    // infinity only where the inequality holds anyway); the right side's
-    // constants are normal and its rounding is within their factor-2 margin.
-    let margin = (det.abs() - A * permanent) * LIFT;
-    if margin > (Z_SLACK * LIFT) * (bz + cz + dz) + (UNDERFLOW_SLACK + extra_slack) * LIFT {
+    let (det, permanent, certified) = stage_a(a, b, c, d, extra_slack);
+    if certified {
         Ok(Sign::of_f64(det))
     } else {
         Err(permanent)
     }
+}
+
+/// Stage 1 without branches: the `f64` determinant, its permanent, and
+/// whether the bound certifies the determinant's sign (`false` for
+/// non-finite input).
+#[inline(always)]
+fn stage_a(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> (f64, f64, bool) {
+    let [a, b, c, d] = [a, b, c, d].map(|p| p.to_array());
+    let (det, permanent, margin, zsum) = stage_a_lanes(a, b, c, d);
+    (det, permanent, certifies(margin, zsum, extra_slack))
+}
+
+/// Stage 1 on one case (`T = f64`) or a block of them (the batch
+/// variants): the determinant expanded along z, its permanent, the margin
+/// `(|det| - A * permanent) * 2^1000` and `|Bz| + |Cz| + |Dz|`, for
+/// [`certifies`]. The same operations in the same order whatever `T`, so
+/// one bound covers both.
+#[inline(always)]
+pub(super) fn stage_a_lanes<T: Lanes>(a: [T; 3], b: [T; 3], c: [T; 3], d: [T; 3]) -> (T, T, T, T) {
+    let rel = |p: [T; 3]| [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
+    let (bb, cc, dd) = (rel(b), rel(c), rel(d));
+    let cxdy = cc[0] * dd[1];
+    let dxcy = dd[0] * cc[1];
+    let dxby = dd[0] * bb[1];
+    let bxdy = bb[0] * dd[1];
+    let bxcy = bb[0] * cc[1];
+    let cxby = cc[0] * bb[1];
+    let det = bb[2] * (cxdy - dxcy) + cc[2] * (dxby - bxdy) + dd[2] * (bxcy - cxby);
+    let (bz, cz, dz) = (bb[2].abs(), cc[2].abs(), dd[2].abs());
+    let permanent = (cxdy.abs() + dxcy.abs()) * bz
+        + (dxby.abs() + bxdy.abs()) * cz
+        + (bxcy.abs() + cxby.abs()) * dz;
+    let margin = (det.abs() - T::splat(A) * permanent) * T::splat(LIFT);
+    (det, permanent, margin, bz + cz + dz)
+}
+
+/// Whether the margin of `stage_a_lanes` certifies the sign, with
+/// `extra_slack` (the scaled filter's) on top of the underflow slack.
+///
+/// `|det| - A * permanent > Z_SLACK * (bz + cz + dz) + UNDERFLOW_SLACK`,
+/// both sides times 2^1000: the slack constants are subnormal, and
+/// arithmetic on them costs a microcode assist on x86 on every call.
+/// Scaling the left side by a power of two is exact (an overflow to
+/// infinity only where the inequality holds anyway); the right side's
+/// constants are normal and its rounding is within their factor-2 margin.
+#[inline(always)]
+pub(super) fn certifies(margin: f64, zsum: f64, extra_slack: f64) -> bool {
+    margin > (Z_SLACK * LIFT) * zsum + (UNDERFLOW_SLACK + extra_slack) * LIFT
+}
+
+/// Stages 2 to 5 for an input stage 1 declined, given its permanent.
+#[inline(always)]
+pub(super) fn declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
+    exact(a, b, c, d, in_range(permanent))
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
@@ -138,7 +176,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    integer::<34, 67, 100>(&points, lo)
+    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<34, 67, 100>(&points, lo))
 }
 
 /// Stage 2: each axis as integers at its finest bit, in native integers
@@ -189,7 +227,10 @@ fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
 /// result. `<34, 67, 100>` holds every finite input: coordinates below `2^2098` (a finite `f64` over its
 /// finest possible bit `2^-1074`), differences below `2^2099`, minors below
 /// `2^4199`, the determinant below `2^6300`.
-fn integer<const D: usize, const M: usize, const R: usize>(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
+pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
+    p: &[DVec3; 4],
+    lo: [i32; 3],
+) -> Sign {
     let int = |v: DVec3| {
         [
             Wide::<D>::from_f64(v.x, lo[0]),

@@ -135,19 +135,70 @@ impl<const N: usize> Wide<N> {
         let (ma, la, na) = a.magnitude();
         let (mb, lb, nb) = b.magnitude();
         let mut r = Self::ZERO;
-        for (i, &x) in ma.iter().enumerate().take(la.min(N)) {
+        if A > 4 && B > 4 {
+            r.mul_sparse_add(&ma[..la], &mb[..lb]);
+        } else {
+            r.mul_schoolbook_add(&ma[..la], &mb[..lb]);
+        }
+        if na != nb { r.neg() } else { r }
+    }
+
+    /// `self += x * y` for magnitudes `x`, `y` (little-endian limbs), by
+    /// the schoolbook loop; `self` must start at zero.
+    #[inline]
+    fn mul_schoolbook_add(&mut self, x: &[u64], y: &[u64]) {
+        for (i, &x) in x.iter().enumerate().take(N) {
             let mut carry = 0u128;
-            let top = lb.min(N - i);
-            for (j, &y) in mb.iter().enumerate().take(top) {
-                let t = x as u128 * y as u128 + r.limbs[i + j] as u128 + carry;
-                r.limbs[i + j] = t as u64;
+            let top = y.len().min(N - i);
+            for (j, &y) in y.iter().enumerate().take(top) {
+                let t = x as u128 * y as u128 + self.limbs[i + j] as u128 + carry;
+                self.limbs[i + j] = t as u64;
                 carry = t >> 64;
             }
             if i + top < N {
-                r.limbs[i + top] = carry as u64;
+                self.limbs[i + top] = carry as u64;
             }
         }
-        if na != nb { r.neg() } else { r }
+    }
+
+    /// `self += x * y` like `mul_schoolbook_add`, multiplying only the
+    /// non-zero limb pairs. Wide operands (the big-integer stages) are
+    /// mostly sparse: a coordinate difference is one or two 53-bit pieces
+    /// at bit positions far apart. Each 128-bit limb product is added in
+    /// place and carried as far as the carry goes: the same sum of limb
+    /// products as the schoolbook loop.
+    #[inline]
+    fn mul_sparse_add(&mut self, x: &[u64], y: &[u64]) {
+        let mut nz = [(0usize, 0u64); N];
+        let mut count = 0;
+        for (j, &v) in y.iter().enumerate().take(N) {
+            if v != 0 {
+                nz[count] = (j, v);
+                count += 1;
+            }
+        }
+        for (i, &x) in x.iter().enumerate().take(N) {
+            if x == 0 {
+                continue;
+            }
+            for &(j, y) in &nz[..count] {
+                let k = i + j;
+                if k >= N {
+                    break;
+                }
+                let t = x as u128 * y as u128;
+                let (v, c0) = self.limbs[k].overflowing_add(t as u64);
+                self.limbs[k] = v;
+                let mut carry = (t >> 64) + c0 as u128;
+                let mut k = k + 1;
+                while carry != 0 && k < N {
+                    let s = self.limbs[k] as u128 + carry;
+                    self.limbs[k] = s as u64;
+                    carry = s >> 64;
+                    k += 1;
+                }
+            }
+        }
     }
 }
 
@@ -182,6 +233,38 @@ mod tests {
                     Sign::from_i8((x as i128 * y as i128).signum() as i8)
                 );
             }
+        }
+    }
+
+    #[test]
+    fn sparse_products_match_schoolbook() {
+        // Random magnitudes, dense and sparse (most limbs zero), of every
+        // length: both loops give the same limbs.
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for round in 0..2000 {
+            let mut x = [0u64; 20];
+            let mut y = [0u64; 20];
+            let (lx, ly) = ((next() % 21) as usize, (next() % 21) as usize);
+            for v in x[..lx].iter_mut().chain(y[..ly].iter_mut()) {
+                let r = next();
+                *v = match round % 3 {
+                    0 => r,
+                    1 if r % 4 == 0 => u64::MAX,
+                    _ if r % 5 == 0 => r >> (r % 64),
+                    _ => 0,
+                };
+            }
+            let mut dense = Wide::<30>::ZERO;
+            let mut sparse = Wide::<30>::ZERO;
+            dense.mul_schoolbook_add(&x[..lx], &y[..ly]);
+            sparse.mul_sparse_add(&x[..lx], &y[..ly]);
+            assert_eq!(dense.limbs, sparse.limbs, "{x:?} {y:?}");
         }
     }
 

@@ -121,6 +121,114 @@ pub fn plane_side(x0: [f64; 3], x1: [f64; 3], x2: [f64; 3], p: [f64; 3], q: [f64
     orient3d(x0, x1, x2, p) * orient3d(x0, x1, x2, q)
 }
 
+/// The exact ordering of `|p - q|` and `|r - q|` (of their squares, which
+/// order alike): `Less` when `p` is strictly nearer to `q` than `r` is.
+pub fn compare_distance(q: [f64; 3], p: [f64; 3], r: [f64; 3]) -> core::cmp::Ordering {
+    let v = common_integers(&[q, p, r].concat());
+    let squared = |o: usize| -> BigInt {
+        (0..3)
+            .map(|k| {
+                let d = &v[o + k] - &v[k];
+                &d * &d
+            })
+            .sum()
+    };
+    squared(3).cmp(&squared(6))
+}
+
+/// `v = m * 2^e` exactly with `m` odd; `None` for zero.
+fn odd_parts(v: f64) -> Option<(BigInt, i32)> {
+    let (m, e) = exact_parts(v);
+    let zeros = m.trailing_zeros()?;
+    Some((m >> zeros, e + zeros as i32))
+}
+
+/// `v * 2^-exp`, which must be an integer.
+fn integer_at(v: f64, exp: i32) -> BigInt {
+    match odd_parts(v) {
+        None => BigInt::zero(),
+        Some((m, e)) => m << usize::try_from(e - exp).expect("exp is at most v's exponent"),
+    }
+}
+
+/// The smallest exponent among the nonzero values (`None` if all are zero).
+fn min_exponent(values: &[f64]) -> Option<i32> {
+    values
+        .iter()
+        .filter_map(|&v| odd_parts(v))
+        .map(|p| p.1)
+        .min()
+}
+
+/// One point set for exact nearest-point answers to many queries: every
+/// coordinate is an integer at the set's smallest exponent, converted once.
+/// Zeros and trailing zero bits do not lower that exponent, so a set of small
+/// integers stays small integers.
+pub struct ExactPointSet {
+    /// The coordinates times `2^-exp`.
+    coords: Vec<[BigInt; 3]>,
+    exp: i32,
+}
+
+impl ExactPointSet {
+    pub fn new(points: &[[f64; 3]]) -> Self {
+        let exp = min_exponent(points.as_flattened()).unwrap_or(0);
+        let coords = points
+            .iter()
+            .map(|p| p.map(|v| integer_at(v, exp)))
+            .collect();
+        ExactPointSet { coords, exp }
+    }
+
+    /// Every index whose point is at exactly the smallest distance from `q`,
+    /// ascending; empty for an empty set.
+    pub fn nearest(&self, q: [f64; 3]) -> Vec<usize> {
+        // The query's coordinates may need a smaller exponent than the set's:
+        // then the points' integers are shifted up by the difference.
+        let exp = min_exponent(&q).map_or(self.exp, |e| e.min(self.exp));
+        let up = (self.exp - exp) as usize;
+        let q = q.map(|v| integer_at(v, exp));
+        let mut best = Vec::new();
+        let mut best_d = BigInt::zero();
+        'points: for (i, p) in self.coords.iter().enumerate() {
+            let mut d = BigInt::zero();
+            for k in 0..3 {
+                let x = if up == 0 {
+                    &p[k] - &q[k]
+                } else {
+                    (&p[k] << up) - &q[k]
+                };
+                // |x| >= 2^(bits - 1), so x^2 >= 2^(2 bits - 2); when that is
+                // at least 2^best_d.bits() > best_d, the point is farther
+                // than the best one: skip the multiplications.
+                if !best.is_empty() && 2 * x.bits() >= best_d.bits() + 2 {
+                    continue 'points;
+                }
+                d += &x * &x;
+            }
+            match (best.is_empty(), d.cmp(&best_d)) {
+                (true, _) | (false, core::cmp::Ordering::Less) => {
+                    best.clear();
+                    best.push(i);
+                    best_d = d;
+                }
+                (false, core::cmp::Ordering::Equal) => best.push(i),
+                (false, core::cmp::Ordering::Greater) => {}
+            }
+        }
+        best
+    }
+}
+
+/// Whether `|p - q| <= r`, exactly.
+pub fn within(q: [f64; 3], p: [f64; 3], r: f64) -> bool {
+    let v = common_integers(&[q[0], q[1], q[2], p[0], p[1], p[2], r]);
+    let d2: BigInt = (0..3)
+        .map(|k| (&v[3 + k] - &v[k]) * (&v[3 + k] - &v[k]))
+        .sum();
+    d2 <= &v[6] * &v[6]
+}
+
 #[cfg(test)]
 mod oracle_self_test {
     use super::*;
@@ -137,5 +245,14 @@ mod oracle_self_test {
         assert_eq!(insphere(t.0, t.1, t.2, t.3, [0.25; 3]), 1);
         assert_eq!(insphere(t.0, t.1, t.2, t.3, [1.0; 3]), 0);
         assert_eq!(exact_parts(f64::from_bits(1)), (BigInt::from(1), -1074));
+        let (q, p) = ([0.0; 3], [1.0, 0.0, 0.0]);
+        assert_eq!(
+            compare_distance(q, p, [0.0, 0.0, -1.0]),
+            core::cmp::Ordering::Equal
+        );
+        assert_eq!(
+            compare_distance(q, p, [1.0, 1e-300, 0.0]),
+            core::cmp::Ordering::Less
+        );
     }
 }

@@ -1,7 +1,8 @@
 #!/bin/sh
-# Rebuilds the generator and rewrites the fixtures it owns in tests/fixtures/
-# (other files there are left alone). The output is deterministic: rerunning
-# gives byte-identical files.
+# Rebuilds the generator and rewrites the fixtures it owns in tests/fixtures/:
+# orient2d.txt, orient3d.txt, plane_side.txt and one nearest-<set>.txt per
+# point set (other files there are left alone). The output is deterministic:
+# rerunning gives byte-identical files.
 #
 #   tools/cgal-fixtures/regenerate.sh          rewrite tests/fixtures/
 #   tools/cgal-fixtures/regenerate.sh --check  fail if tests/fixtures/ is stale
@@ -19,11 +20,24 @@ trap 'rm -rf "$tmp"' EXIT
 if [ "${1:-}" = "--check" ]; then
     status=0
     for f in "$tmp"/*.txt; do
-        if ! cmp -s "$f" "$dest/$(basename "$f")"; then
-            echo "stale: tests/fixtures/$(basename "$f")" >&2
+        name=$(basename "$f")
+        if [ ! -f "$dest/$name" ]; then
+            echo "missing: tests/fixtures/$name" >&2
+            status=1
+        elif ! cmp -s "$f" "$dest/$name"; then
+            echo "stale: tests/fixtures/$name" >&2
             status=1
         fi
     done
+    # A nearest set the generator no longer writes (renamed or removed).
+    for f in "$dest"/nearest-*.txt; do
+        [ -f "$f" ] || continue
+        if [ ! -f "$tmp/$(basename "$f")" ]; then
+            echo "not generated (remove it?): tests/fixtures/$(basename "$f")" >&2
+            status=1
+        fi
+    done
+    [ $status -eq 0 ] && echo "up to date: $(ls "$tmp" | wc -l) files in tests/fixtures/" >&2
     exit $status
 fi
 
@@ -32,3 +46,7 @@ for f in "$tmp"/*.txt; do
     cp "$f" "$dest/$(basename "$f")"
 done
 echo "wrote $(ls "$tmp" | wc -l) files to $dest" >&2
+for f in "$dest"/nearest-*.txt; do
+    [ -f "$f" ] || continue
+    [ -f "$tmp/$(basename "$f")" ] || echo "warning: tests/fixtures/$(basename "$f") is not generated any more" >&2
+done

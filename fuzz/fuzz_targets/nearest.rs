@@ -1,0 +1,117 @@
+//! `SphereBvh` against an exact brute force (the num-bigint oracle), on
+//! fuzzer-chosen point sets and queries.
+//!
+//! Coordinates come from raw bit patterns (every finite value, subnormals
+//! included) or from a small grid scaled by a fuzzer-chosen power of two, and
+//! some points are copies of others nudged by a few ulps, so exact ties and
+//! near-ties are common. Checked: `nearest` (a true nearest, the smallest
+//! index among exact ties), `nearest_k` (the exact order), `within_radius`
+//! (exact membership). A failing input panics with the data.
+#![no_main]
+
+use arbitrary::{Arbitrary, Result, Unstructured};
+use exactray::SphereBvh;
+use exactray::bvh::Nearest;
+use exactray::hard_inputs::step_ulps;
+use exactray::inputs::finite_f64_from_bits;
+use glam::DVec3;
+use libfuzzer_sys::fuzz_target;
+
+#[path = "../../tests/common/oracle.rs"]
+mod oracle;
+
+#[derive(Debug)]
+struct Case {
+    points: Vec<DVec3>,
+    queries: Vec<DVec3>,
+}
+
+fn coordinate(u: &mut Unstructured, scale: f64) -> Result<f64> {
+    Ok(if u.arbitrary::<bool>()? {
+        finite_f64_from_bits(u.arbitrary()?)
+    } else {
+        (u.int_in_range(-4i8..=4)? as f64) * 0.5 * scale
+    })
+}
+
+fn point(u: &mut Unstructured, scale: f64, earlier: &[DVec3]) -> Result<DVec3> {
+    if !earlier.is_empty() && u.arbitrary::<bool>()? {
+        let p = earlier[u.choose_index(earlier.len())?];
+        let k = u.int_in_range(-3i64..=3)?;
+        return Ok(match u.int_in_range(0u8..=3)? {
+            0 => p,
+            1 => DVec3::new(step_ulps(p.x, k), p.y, p.z),
+            2 => DVec3::new(p.x, step_ulps(p.y, k), step_ulps(p.z, -k)),
+            _ => -p,
+        });
+    }
+    Ok(DVec3::new(
+        coordinate(u, scale)?,
+        coordinate(u, scale)?,
+        coordinate(u, scale)?,
+    ))
+}
+
+impl<'a> Arbitrary<'a> for Case {
+    fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
+        let scale = 2f64.powi(u.int_in_range(-1074..=1020)?);
+        let n = u.int_in_range(1usize..=48)?;
+        let mut points = Vec::with_capacity(n);
+        for _ in 0..n {
+            let p = point(u, scale, &points)?;
+            points.push(p);
+        }
+        let mut queries = Vec::new();
+        for _ in 0..u.int_in_range(1usize..=4)? {
+            queries.push(point(u, scale, &points)?);
+        }
+        Ok(Case { points, queries })
+    }
+}
+
+fn order(q: DVec3, (ia, a): (usize, DVec3), (ib, b): (usize, DVec3)) -> core::cmp::Ordering {
+    oracle::compare_distance(q.to_array(), a.to_array(), b.to_array()).then(ia.cmp(&ib))
+}
+
+fuzz_target!(|case: Case| {
+    // An ulp step off the largest finite value gives infinity: such sets
+    // must be refused, and nothing else may be.
+    let finite = case.points.iter().all(|p| p.is_finite());
+    let bvh = match SphereBvh::from_points(&case.points) {
+        Ok(bvh) => bvh,
+        Err(e) => {
+            assert!(!finite, "refused a finite set: {e}");
+            return;
+        }
+    };
+    assert!(finite, "accepted a non-finite set");
+    if case.queries.iter().any(|q| !q.is_finite()) {
+        return;
+    }
+    let mut sorted: Vec<(usize, DVec3)> = case.points.iter().copied().enumerate().collect();
+    for &q in &case.queries {
+        sorted.sort_by(|&a, &b| order(q, a, b));
+        let hit = bvh.nearest(q).unwrap();
+        assert_eq!(hit.index, sorted[0].0, "nearest: {case:?} query {q:?}");
+        let k = 3.min(sorted.len());
+        let mut out = [Nearest {
+            index: usize::MAX,
+            point: DVec3::ZERO,
+            distance: 0.0,
+        }; 3];
+        assert_eq!(bvh.nearest_k(q, &mut out), k);
+        for j in 0..k {
+            assert_eq!(out[j].index, sorted[j].0, "nearest_k: {case:?} query {q:?}");
+        }
+        let r = hit.distance;
+        if r.is_finite() {
+            let mut got = Vec::new();
+            bvh.within_radius(q, r, |h| got.push(h.index)).unwrap();
+            got.sort();
+            let want: Vec<usize> = (0..case.points.len())
+                .filter(|&i| oracle::within(q.to_array(), case.points[i].to_array(), r))
+                .collect();
+            assert_eq!(got, want, "within_radius {r}: {case:?} query {q:?}");
+        }
+    }
+});

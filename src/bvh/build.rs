@@ -1,0 +1,187 @@
+//! Top-down construction: median splits along the widest axis of a
+//! conservative box, leaves of at most [`LEAF`] points, spheres fitted
+//! bottom-up (a leaf's around its points, a parent's around its children's).
+
+use super::sphere::{merge, norm2_root_up, unscale_up};
+use super::{Child, LEAF, Node, SphereBvh};
+use crate::predicates::grain::{pow2, unit_scale};
+use alloc::vec::Vec;
+use glam::DVec3;
+
+/// A point and its original index, moved around while building.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Entry {
+    pub p: DVec3,
+    pub index: u32,
+}
+
+/// Below this many points a subtree is built on the calling thread: smaller
+/// tasks cost more to hand over than they take.
+#[cfg(feature = "rayon")]
+const PARALLEL_MIN: usize = 1 << 15;
+
+/// The power of two that brings the largest coordinate near 1, within the
+/// range where `pow2` is exact.
+pub(crate) fn scale_for(max_abs: f64) -> f64 {
+    pow2(unit_scale(&[max_abs]).clamp(-1000, 1000))
+}
+
+/// Builds the index; `entries` are finite.
+pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64) -> SphereBvh {
+    let scale = scale_for(max_abs);
+    let mut nodes = Vec::with_capacity(entries.len() / 4 + 1);
+    let root = if entries.is_empty() {
+        None
+    } else {
+        Some(subtree(&mut entries, 0, scale, &mut nodes))
+    };
+    nodes.shrink_to_fit();
+    SphereBvh {
+        xs: entries.iter().map(|e| e.p.x).collect(),
+        ys: entries.iter().map(|e| e.p.y).collect(),
+        zs: entries.iter().map(|e| e.p.z).collect(),
+        index: entries.iter().map(|e| e.index).collect(),
+        nodes,
+        root,
+        max_abs,
+    }
+}
+
+/// The bounding box of a non-empty set.
+fn bounds(entries: &[Entry]) -> (DVec3, DVec3) {
+    entries.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), e| (lo.min(e.p), hi.max(e.p)),
+    )
+}
+
+/// Builds the subtree over `entries` (non-empty; they sit at `offset` in
+/// tree order) into `nodes`, splitting at the median of the widest axis of
+/// their bounding box.
+fn subtree(entries: &mut [Entry], offset: u32, scale: f64, nodes: &mut Vec<Node>) -> Child {
+    let (lo, hi) = bounds(entries);
+    if entries.len() <= LEAF {
+        let (center, radius) = points_sphere(entries, (lo, hi), scale);
+        return Child {
+            center,
+            radius,
+            link: offset,
+            len: entries.len() as u32,
+        };
+    }
+    // Halves of the extent: `hi - lo` could overflow.
+    let axis = (hi * 0.5 - lo * 0.5).max_position();
+    let mid = entries.len() / 2;
+    entries.select_nth_unstable_by(mid, |a, b| a.p[axis].total_cmp(&b.p[axis]));
+    let split = entries[mid].p[axis];
+    let (left, right) = entries.split_at_mut(mid);
+    let right_offset = offset + mid as u32;
+
+    #[cfg(feature = "rayon")]
+    if left.len() + right.len() >= PARALLEL_MIN {
+        let ((lc, ln), (rc, rn)) = rayon::join(
+            || owned_subtree(left, offset, scale),
+            || owned_subtree(right, right_offset, scale),
+        );
+        let me = nodes.len();
+        nodes.push(placeholder());
+        let lc = append(nodes, ln, lc);
+        let rc = append(nodes, rn, rc);
+        let around = points_sphere(entries, (lo, hi), scale);
+        return parent(nodes, me, [lc, rc], (axis, split), around, scale);
+    }
+
+    let me = nodes.len();
+    nodes.push(placeholder());
+    let lc = subtree(left, offset, scale, nodes);
+    let rc = subtree(right, right_offset, scale, nodes);
+    let around = points_sphere(entries, (lo, hi), scale);
+    parent(nodes, me, [lc, rc], (axis, split), around, scale)
+}
+
+/// A subtree in a vector of its own (for a parallel task).
+#[cfg(feature = "rayon")]
+fn owned_subtree(entries: &mut [Entry], offset: u32, scale: f64) -> (Child, Vec<Node>) {
+    let mut nodes = Vec::with_capacity(entries.len() / 4 + 1);
+    let child = subtree(entries, offset, scale, &mut nodes);
+    (child, nodes)
+}
+
+/// Appends a subtree built on its own, moving its node links by where it
+/// lands; returns its root with the moved link.
+#[cfg(feature = "rayon")]
+fn append(nodes: &mut Vec<Node>, sub: Vec<Node>, mut root: Child) -> Child {
+    let base = nodes.len() as u32;
+    nodes.extend(sub.into_iter().map(|mut n| {
+        for k in 0..2 {
+            if n.len[k] == 0 {
+                n.link[k] += base;
+            }
+        }
+        n
+    }));
+    if root.len == 0 {
+        root.link += base;
+    }
+    root
+}
+
+fn placeholder() -> Node {
+    Node {
+        cx: [0.0; 2],
+        cy: [0.0; 2],
+        cz: [0.0; 2],
+        r: [0.0; 2],
+        link: [0; 2],
+        len: [0; 2],
+        split: 0.0,
+        axis: 0,
+    }
+}
+
+/// Fills in node `me` from its children and returns it as a child. Its
+/// sphere is the smaller of the one around its children's spheres and
+/// `around`, the one around its points: either encloses every point below.
+fn parent(
+    nodes: &mut [Node],
+    me: usize,
+    [l, r]: [Child; 2],
+    (axis, split): (usize, f64),
+    around: (DVec3, f64),
+    scale: f64,
+) -> Child {
+    nodes[me] = Node {
+        cx: [l.center.x, r.center.x],
+        cy: [l.center.y, r.center.y],
+        cz: [l.center.z, r.center.z],
+        r: [l.radius, r.radius],
+        link: [l.link, r.link],
+        len: [l.len, r.len],
+        split,
+        axis: axis as u32,
+    };
+    let (mut center, mut radius) = merge(l.center, l.radius, r.center, r.radius, scale);
+    if around.1 < radius {
+        (center, radius) = around;
+    }
+    Child {
+        center,
+        radius,
+        link: me as u32,
+        len: 0,
+    }
+}
+
+/// The sphere around the centre of the points' bounding box `lo..hi`, with
+/// a radius that bounds every point's exact distance from that centre.
+fn points_sphere(entries: &[Entry], (lo, hi): (DVec3, DVec3), scale: f64) -> (DVec3, f64) {
+    let center = lo * 0.5 + hi * 0.5;
+    let far = entries
+        .iter()
+        .map(|e| {
+            let d = (e.p - center) * scale;
+            d.x * d.x + d.y * d.y + d.z * d.z
+        })
+        .fold(0.0f64, f64::max);
+    (center, unscale_up(norm2_root_up(far), scale))
+}

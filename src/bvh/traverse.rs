@@ -1,0 +1,171 @@
+//! The branch-and-bound walk every query shares: a stack, the nearer child
+//! first, and the exam's prune `|c - q| - r >= d`, made conservative.
+//!
+//! All distances of one query are computed on differences scaled by a power
+//! of two `s` chosen from the query and the largest coordinate of the index,
+//! so that no square overflows and small differences keep their precision;
+//! scaling by a power of two is exact (below `2^-1022`, off by at most
+//! `2^-1075`, which the bounds absorb).
+
+use super::sphere::UNDERFLOW_DISTANCE;
+use super::{Child, Counter, LEAF, SphereBvh, sqrt};
+use crate::predicates::grain::{pow2, unit_scale};
+use glam::DVec3;
+
+/// `u = 2^-53`.
+const U: f64 = f64::EPSILON / 2.0;
+
+/// The prune, without a square root: a node whose sphere has scaled radius
+/// `r` and whose centre is at computed squared scaled distance `d2` holds no
+/// point within the visitor's reach when `d2 (1 - 16u) > (r + reach)^2`,
+/// computed. Why that is safe: the exact squared distance is at least
+/// `(d2 - 2^-1071) / (1 + gamma_5)` (see `predicates::distance`); `reach`
+/// exceeds the exact distance it stands for by a factor `(1 + 7u)` and by
+/// `2^-529` (see [`reach_of`]), so the computed `(r + reach)^2`, after its
+/// two roundings, still exceeds the exact `(r + d)^2` by `(1 + 10u)` and by
+/// `2^-1058`, more than the `2^-1071` and the `gamma_5 + 16u` on the other
+/// side.
+const PRUNE: f64 = 1.0 - 16.0 * U;
+
+/// `true` when the node cannot hold a point within `reach`. Neither a NaN
+/// (an infinite radius from an overflowing build) nor an infinite `d2` (a
+/// difference of coordinates near `f64::MAX` overflowed before scaling, so
+/// the distance is unknown, not large) ever prunes.
+#[inline(always)]
+fn pruned(d2: f64, r: f64, reach: f64) -> bool {
+    let t = r + reach;
+    d2 * PRUNE > t * t && d2 < f64::INFINITY
+}
+
+/// `true` when a point at least `|offset|` (computed, scaled) away cannot
+/// be within `reach`: the exact offset is at least `|offset| / (1 + u)`
+/// (one rounded subtraction; the scaling is exact, or off by `2^-1075` below
+/// `2^-1022`, which the `2^-529` in `reach` absorbs), and `reach` carries a
+/// factor `1 + 7u` over the exact distance it bounds.
+/// An overflowed (infinite) offset never prunes.
+#[inline(always)]
+fn beyond_plane(offset: f64, reach: f64) -> bool {
+    offset.abs() > reach && offset.abs() < f64::INFINITY
+}
+
+/// Stack capacity. Median splits halve every subtree, so a tree over at most
+/// `2^32` points is at most 28 levels deep above its leaves of 16 to 32
+/// points; the walk holds at most one entry per level (the far children on
+/// the current path).
+const STACK: usize = 32;
+
+/// What a query does with the points it reaches, and how far it still looks.
+pub(crate) trait Visitor {
+    /// Where the walk's statistics go.
+    type Counter: Counter;
+    fn counter(&mut self) -> &mut Self::Counter;
+    /// Nodes whose lower bound (scaled units, see [`reach_of`]) exceeds this
+    /// cannot hold a point the query wants.
+    fn reach(&self) -> f64;
+    /// Point `i` (tree order) at computed squared scaled distance `d2`.
+    fn point(&mut self, tree: &SphereBvh, i: usize, d2: f64);
+}
+
+/// The bound a visitor reports for an upper bound `hi` of a squared scaled
+/// distance: an upper bound of the distance, widened by the margins that
+/// [`LOWER`] leaves to this side (`sqrt` rounding, the subtraction of the
+/// radius, and the `2^-535` underflow term, doubled).
+#[inline]
+pub(crate) fn reach_of(hi: f64) -> f64 {
+    sqrt(hi) * (1.0 + 8.0 * U) + 2.0 * UNDERFLOW_DISTANCE
+}
+
+/// The scale of a query at `q` (finite) in `tree`.
+#[inline]
+pub(crate) fn scale_of(tree: &SphereBvh, q: DVec3) -> f64 {
+    let m = tree.max_abs.max(q.abs().max_element());
+    pow2(unit_scale(&[m]).clamp(-1000, 1000))
+}
+
+/// Computed squared norm of `(p - q) * s`.
+#[inline(always)]
+fn dist2(p: DVec3, q: DVec3, s: f64) -> f64 {
+    let d = (p - q) * s;
+    d.x * d.x + d.y * d.y + d.z * d.z
+}
+
+/// Walks `tree` (non-empty) from the root, handing every point of every
+/// leaf that may hold a wanted point to `v`.
+#[inline]
+pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64, v: &mut V) {
+    let mut stack = [(0u32, 0u32, 0.0f64, 0.0f64); STACK];
+    let mut top = 0;
+    let mut next = (
+        root.link,
+        root.len,
+        dist2(root.center, q, s),
+        root.radius * s,
+    );
+    loop {
+        let (link, len, d2, r) = next;
+        if !pruned(d2, r, v.reach()) {
+            v.counter().node();
+            if len == 0 {
+                let node = &tree.nodes[link as usize];
+                // Both children at once, lane by lane (two-wide vector code).
+                let lane = |k: usize| {
+                    let d = [
+                        (node.cx[k] - q.x) * s,
+                        (node.cy[k] - q.y) * s,
+                        (node.cz[k] - q.z) * s,
+                    ];
+                    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2], node.r[k] * s)
+                };
+                let ((da, ra), (db, rb)) = (lane(0), lane(1));
+                // The side of the split plane `q` is on comes first; the
+                // other side is at least `|offset|` away.
+                let qa = match node.axis {
+                    0 => q.x,
+                    1 => q.y,
+                    _ => q.z,
+                };
+                let offset = (qa - node.split) * s;
+                let (near, far) = if offset <= 0.0 { (0, 1) } else { (1, 0) };
+                let (dn, rn, df, rf) = if near == 0 {
+                    (da, ra, db, rb)
+                } else {
+                    (db, rb, da, ra)
+                };
+                let reach = v.reach();
+                if !pruned(df, rf, reach) && !beyond_plane(offset, reach) {
+                    stack[top] = (node.link[far], node.len[far], df, rf);
+                    top += 1;
+                }
+                next = (node.link[near], node.len[near], dn, rn);
+                continue;
+            }
+            leaf(tree, link as usize, len as usize, q, s, v);
+        }
+        if top == 0 {
+            return;
+        }
+        top -= 1;
+        next = stack[top];
+    }
+}
+
+/// Hands the `len <= LEAF` points from tree position `start` to `v`, their
+/// distances computed first in one pass that the compiler vectorizes.
+#[inline(always)]
+fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64, v: &mut V) {
+    v.counter().distances(len);
+    let end = start + len.min(LEAF);
+    let (xs, ys, zs) = (
+        &tree.xs[start..end],
+        &tree.ys[start..end],
+        &tree.zs[start..end],
+    );
+    let mut d2 = [0.0f64; LEAF];
+    for (k, d) in d2.iter_mut().enumerate().take(xs.len()) {
+        let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
+        *d = dx * dx + dy * dy + dz * dz;
+    }
+    for (k, &d) in d2.iter().enumerate().take(xs.len()) {
+        v.point(tree, start + k, d);
+    }
+}
