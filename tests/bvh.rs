@@ -427,3 +427,120 @@ fn zero_radius_at_signed_zeros() {
     got.sort();
     assert_eq!(got, [0, 2, 3]);
 }
+
+/// Balls of random radii (zero included), some containing the query, some
+/// in exactly tied pairs around it.
+fn ball_case(seed: u64, n: usize) -> (Vec<(DVec3, f64)>, Vec<DVec3>) {
+    let mut rng = SplitMix64::new(seed);
+    let mut balls: Vec<(DVec3, f64)> = (0..n)
+        .map(|i| {
+            let r = match i % 4 {
+                0 => 0.0,
+                _ => rng.next_f64() * 0.3,
+            };
+            (uniform(&mut rng), r)
+        })
+        .collect();
+    let q = uniform(&mut rng);
+    // An exact tie: mirror images of a ball through the query, when exact.
+    let (c, r) = balls[0];
+    let mirror = q * 2.0 - c;
+    if (mirror + c) * 0.5 == q && mirror - q == q - c {
+        balls.push((mirror, r));
+    }
+    // A ball one ulp of radius apart from another.
+    let (c, r) = balls[n / 2];
+    balls.push((c, step_ulps(r.max(0.25), 1)));
+    let queries = vec![q, uniform(&mut rng), balls[1].0, DVec3::new(3.0, -2.0, 0.5)];
+    (balls, queries)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    #[test]
+    fn balls_against_exact_brute_force(seed in any::<u64>(), n in 1usize..80) {
+        let (balls, queries) = ball_case(seed, n);
+        let bvh = SphereBvh::from_spheres(&balls).unwrap();
+        let arr = |(c, r): (DVec3, f64)| (c.to_array(), r);
+        for &q in &queries {
+            let mut sorted: Vec<usize> = (0..balls.len()).collect();
+            sorted.sort_by(|&i, &j| {
+                oracle::compare_ball_distance(q.to_array(), arr(balls[i]), arr(balls[j])).then(i.cmp(&j))
+            });
+            let hit = bvh.nearest(q).unwrap();
+            prop_assert_eq!(hit.index, sorted[0], "nearest ball to {:?}", q);
+            prop_assert_eq!(hit.point, balls[hit.index].0);
+            let k = 4.min(balls.len());
+            let mut out = [Nearest { index: 0, point: DVec3::ZERO, distance: 0.0 }; 4];
+            prop_assert_eq!(bvh.nearest_k(q, &mut out), k);
+            let got: Vec<usize> = out[..k].iter().map(|h| h.index).collect();
+            prop_assert_eq!(&got[..], &sorted[..k]);
+            let r = out[k - 1].distance;
+            let mut got = Vec::new();
+            bvh.within_radius(q, r, |h| got.push(h.index)).unwrap();
+            got.sort();
+            let want: Vec<usize> = (0..balls.len())
+                .filter(|&i| oracle::ball_within(q.to_array(), arr(balls[i]), r))
+                .collect();
+            prop_assert_eq!(got, want);
+        }
+    }
+}
+
+#[test]
+fn bad_spheres_are_typed_errors() {
+    let ok = DVec3::ZERO;
+    let err = |r: f64, c: DVec3| SphereBvh::from_spheres(&[(ok, 1.0), (c, r)]).unwrap_err();
+    let invalid = InputError::InvalidRadius {
+        argument: "spheres",
+    };
+    let non_finite = InputError::NonFinite {
+        argument: "spheres",
+    };
+    assert_eq!(err(-1.0, ok), invalid);
+    assert_eq!(err(f64::NAN, ok), invalid);
+    assert_eq!(err(f64::INFINITY, ok), non_finite);
+    assert_eq!(err(1.0, DVec3::new(0.0, f64::NAN, 0.0)), non_finite);
+    assert!(
+        SphereBvh::from_spheres::<DVec3>(&[])
+            .unwrap()
+            .nearest(ok)
+            .is_none()
+    );
+}
+
+/// Fuzzer finding: differences of coordinates near `f64::MAX` overflow, and
+/// an overflowed (infinite) computed distance is not a large one. Point 1 is
+/// nearest (about 1.82e308 away); point 0 (about 2.54e308) has a finite
+/// computed distance.
+#[test]
+fn overflowing_differences_are_not_far() {
+    let points = [
+        DVec3::new(
+            -1.7976922843523588e308,
+            1.5573742111089948e-207,
+            1.3758210268297398e-135,
+        ),
+        DVec3::new(
+            -4.1274630804892193e-135,
+            -2.7516420536594796e-135,
+            -1.1848942823504931e306,
+        ),
+    ];
+    let q = DVec3::new(
+        2.7516420536594814e-135,
+        1.7190769349208505e307,
+        1.7976931348623157e308,
+    );
+    let bvh = SphereBvh::from_points(&points).unwrap();
+    assert_eq!(bvh.nearest(q).unwrap().index, 1);
+    let balls = points.map(|p| (p, 0.0));
+    assert_eq!(
+        SphereBvh::from_spheres(&balls)
+            .unwrap()
+            .nearest(q)
+            .unwrap()
+            .index,
+        1
+    );
+}

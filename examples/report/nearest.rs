@@ -4,7 +4,8 @@
 //!
 //! Inputs: `uniform:N` (points and queries uniform in the unit cube),
 //! `clustered:N` (points and queries from the same mixture of 100 Gaussian
-//! clusters) and `off-distribution:N` (the clustered points, queries uniform
+//! clusters), `near-ties:N` (a grid nudged by up to an ulp, queried at
+//! nudged cell centres; smallest N only) and `off-distribution:N` (the clustered points, queries uniform
 //! in the cube). A method's answer is wrong when its point is not at the
 //! minimal exact distance from the query (exact `num-bigint` arithmetic,
 //! independent of the crate); ties may go to any of the tied points.
@@ -34,6 +35,9 @@ pub enum Dist {
     Uniform,
     Clustered,
     OffDistribution,
+    /// A cubic grid whose coordinates are nudged by up to one ulp, queried
+    /// at cell centres nudged by one ulp: 8-way near-ties everywhere.
+    NearTies,
 }
 
 impl Dist {
@@ -42,6 +46,7 @@ impl Dist {
             Dist::Uniform => "uniform",
             Dist::Clustered => "clustered",
             Dist::OffDistribution => "off-distribution",
+            Dist::NearTies => "near-ties",
         }
     }
 
@@ -132,10 +137,20 @@ pub fn points(cfg: &Config, dist: Dist, n: usize) -> Vec<Point> {
     let key = match dist {
         Dist::Uniform => "uniform",
         Dist::Clustered | Dist::OffDistribution => "clustered",
+        Dist::NearTies => "near-ties",
     };
     let mut rng = cfg.rng("nearest", &format!("points/{key}:{n}"));
     match dist {
         Dist::Uniform => (0..n).map(|_| uniform_point(&mut rng)).collect(),
+        Dist::NearTies => {
+            let m = grid_side(n);
+            (0..n)
+                .map(|i| {
+                    let cell = [i % m, i / m % m, i / (m * m)];
+                    cell.map(|c| nudge(&mut rng, c as f64 / m as f64))
+                })
+                .collect()
+        }
         _ => {
             let c = clusters(cfg);
             (0..n).map(|_| clustered_point(&mut rng, &c)).collect()
@@ -151,10 +166,28 @@ pub fn queries(cfg: &Config, dist: Dist, n: usize, count: usize) -> Vec<DVec3> {
         .map(|_| {
             DVec3::from_array(match dist {
                 Dist::Clustered => clustered_point(&mut rng, &c),
+                Dist::NearTies => {
+                    // A cell centre inside the filled part of the grid.
+                    let m = grid_side(n);
+                    let cells = (n / (m * m)).max(1);
+                    let cell =
+                        [m - 1, m - 1, cells - 1].map(|k| rng.next_u64() as usize % k.max(1));
+                    cell.map(|c| nudge(&mut rng, (c as f64 + 0.5) / m as f64))
+                }
                 _ => uniform_point(&mut rng),
             })
         })
         .collect()
+}
+
+/// The side of the cubic grid holding `n` points.
+fn grid_side(n: usize) -> usize {
+    ((n as f64).cbrt().ceil() as usize).max(2)
+}
+
+/// `v` moved by -1, 0 or 1 ulp.
+fn nudge(rng: &mut SplitMix64, v: f64) -> f64 {
+    exactray::hard_inputs::step_ulps(v, (rng.next_u64() % 3) as i64 - 1)
 }
 
 /// Relative error bound on `fl(|p - q|^2)` (five roundings per term, `5u`
@@ -515,6 +548,12 @@ pub fn run(cfg: &Config) -> Vec<Row> {
             Dist::OffDistribution,
             &mut details,
         ));
+    }
+    // Near-ties at the smallest size only: the exact brute force settles
+    // eight near-tied candidates per query there.
+    if let Some(&n) = sizes.ns.first() {
+        let ix = Indexes::build(points(cfg, Dist::NearTies, n));
+        rows.extend(measure(cfg, &sizes, &ix, Dist::NearTies, &mut details));
     }
     note("nearest", notes(&sizes, &details));
     rows

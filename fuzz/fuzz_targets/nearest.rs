@@ -23,6 +23,8 @@ mod oracle;
 #[derive(Debug)]
 struct Case {
     points: Vec<DVec3>,
+    /// Radii, for an index of balls (`from_spheres`); `None` for points.
+    radii: Option<Vec<f64>>,
     queries: Vec<DVec3>,
 }
 
@@ -65,19 +67,64 @@ impl<'a> Arbitrary<'a> for Case {
         for _ in 0..u.int_in_range(1usize..=4)? {
             queries.push(point(u, scale, &points)?);
         }
-        Ok(Case { points, queries })
+        let radii = if u.ratio(1, 3)? {
+            let mut radii = Vec::with_capacity(n);
+            for _ in 0..n {
+                radii.push(if u.arbitrary()? {
+                    0.0
+                } else {
+                    coordinate(u, scale)?.abs()
+                });
+            }
+            Some(radii)
+        } else {
+            None
+        };
+        Ok(Case {
+            points,
+            radii,
+            queries,
+        })
     }
 }
 
-fn order(q: DVec3, (ia, a): (usize, DVec3), (ib, b): (usize, DVec3)) -> core::cmp::Ordering {
-    oracle::compare_distance(q.to_array(), a.to_array(), b.to_array()).then(ia.cmp(&ib))
+/// The exact order of items `a` and `b` (indices) by distance from `q`,
+/// then by index.
+fn order(case: &Case, q: DVec3, a: usize, b: usize) -> core::cmp::Ordering {
+    let (pa, pb) = (case.points[a].to_array(), case.points[b].to_array());
+    match &case.radii {
+        None => oracle::compare_distance(q.to_array(), pa, pb),
+        Some(r) => oracle::compare_ball_distance(q.to_array(), (pa, r[a]), (pb, r[b])),
+    }
+    .then(a.cmp(&b))
+}
+
+/// Whether item `i` lies within `r` of `q`, exactly.
+fn within(case: &Case, q: DVec3, i: usize, r: f64) -> bool {
+    let p = case.points[i].to_array();
+    match &case.radii {
+        None => oracle::within(q.to_array(), p, r),
+        Some(radii) => oracle::ball_within(q.to_array(), (p, radii[i]), r),
+    }
 }
 
 fuzz_target!(|case: Case| {
     // An ulp step off the largest finite value gives infinity: such sets
     // must be refused, and nothing else may be.
     let finite = case.points.iter().all(|p| p.is_finite());
-    let bvh = match SphereBvh::from_points(&case.points) {
+    let built = match &case.radii {
+        None => SphereBvh::from_points(&case.points),
+        Some(radii) => {
+            let balls: Vec<(DVec3, f64)> = case
+                .points
+                .iter()
+                .copied()
+                .zip(radii.iter().copied())
+                .collect();
+            SphereBvh::from_spheres(&balls)
+        }
+    };
+    let bvh = match built {
         Ok(bvh) => bvh,
         Err(e) => {
             assert!(!finite, "refused a finite set: {e}");
@@ -88,11 +135,11 @@ fuzz_target!(|case: Case| {
     if case.queries.iter().any(|q| !q.is_finite()) {
         return;
     }
-    let mut sorted: Vec<(usize, DVec3)> = case.points.iter().copied().enumerate().collect();
+    let mut sorted: Vec<usize> = (0..case.points.len()).collect();
     for &q in &case.queries {
-        sorted.sort_by(|&a, &b| order(q, a, b));
+        sorted.sort_by(|&a, &b| order(&case, q, a, b));
         let hit = bvh.nearest(q).unwrap();
-        assert_eq!(hit.index, sorted[0].0, "nearest: {case:?} query {q:?}");
+        assert_eq!(hit.index, sorted[0], "nearest: {case:?} query {q:?}");
         let k = 3.min(sorted.len());
         let mut out = [Nearest {
             index: usize::MAX,
@@ -101,7 +148,7 @@ fuzz_target!(|case: Case| {
         }; 3];
         assert_eq!(bvh.nearest_k(q, &mut out), k);
         for j in 0..k {
-            assert_eq!(out[j].index, sorted[j].0, "nearest_k: {case:?} query {q:?}");
+            assert_eq!(out[j].index, sorted[j], "nearest_k: {case:?} query {q:?}");
         }
         let r = hit.distance;
         if r.is_finite() {
@@ -109,7 +156,7 @@ fuzz_target!(|case: Case| {
             bvh.within_radius(q, r, |h| got.push(h.index)).unwrap();
             got.sort();
             let want: Vec<usize> = (0..case.points.len())
-                .filter(|&i| oracle::within(q.to_array(), case.points[i].to_array(), r))
+                .filter(|&i| within(&case, q, i, r))
                 .collect();
             assert_eq!(got, want, "within_radius {r}: {case:?} query {q:?}");
         }

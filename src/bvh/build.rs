@@ -2,7 +2,7 @@
 //! conservative box, leaves of at most [`LEAF`] points, spheres fitted
 //! bottom-up (a leaf's around its points, a parent's around its children's).
 
-use super::sphere::{merge, norm2_root_up, unscale_up};
+use super::sphere::{merge, norm2_root_up, sum_up, unscale_up};
 use super::{Child, LEAF, Node, SphereBvh};
 use crate::predicates::grain::{pow2, unit_scale};
 use alloc::vec::Vec;
@@ -12,6 +12,8 @@ use glam::DVec3;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Entry {
     pub p: DVec3,
+    /// The item's radius: 0 for a point.
+    pub r: f64,
     pub index: u32,
 }
 
@@ -27,7 +29,8 @@ pub(crate) fn scale_for(max_abs: f64) -> f64 {
 }
 
 /// Builds the index; `entries` are finite.
-pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64) -> SphereBvh {
+/// `balls`: keep the radii (an index of spheres).
+pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> SphereBvh {
     let scale = scale_for(max_abs);
     let mut nodes = Vec::with_capacity(entries.len() / 4 + 1);
     let root = if entries.is_empty() {
@@ -41,6 +44,11 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64) -> SphereBvh {
         ys: entries.iter().map(|e| e.p.y).collect(),
         zs: entries.iter().map(|e| e.p.z).collect(),
         index: entries.iter().map(|e| e.index).collect(),
+        radii: if balls {
+            entries.iter().map(|e| e.r).collect()
+        } else {
+            Vec::new()
+        },
         nodes,
         root,
         max_abs,
@@ -176,12 +184,18 @@ fn parent(
 /// a radius that bounds every point's exact distance from that centre.
 fn points_sphere(entries: &[Entry], (lo, hi): (DVec3, DVec3), scale: f64) -> (DVec3, f64) {
     let center = lo * 0.5 + hi * 0.5;
-    let far = entries
+    let squared = |e: &Entry| {
+        let d = (e.p - center) * scale;
+        d.x * d.x + d.y * d.y + d.z * d.z
+    };
+    if entries.iter().all(|e| e.r == 0.0) {
+        let far = entries.iter().map(squared).fold(0.0f64, f64::max);
+        return (center, unscale_up(norm2_root_up(far), scale));
+    }
+    // Balls: the farthest surface point, `|c_i - center| + r_i`, bounded above.
+    let radius = entries
         .iter()
-        .map(|e| {
-            let d = (e.p - center) * scale;
-            d.x * d.x + d.y * d.y + d.z * d.z
-        })
+        .map(|e| sum_up(unscale_up(norm2_root_up(squared(e)), scale), e.r))
         .fold(0.0f64, f64::max);
-    (center, unscale_up(norm2_root_up(far), scale))
+    (center, radius)
 }

@@ -1,5 +1,5 @@
-//! A bounding-sphere hierarchy over points, for exact nearest-point queries
-//! (exam question Q8): [`SphereBvh`].
+//! A bounding-sphere hierarchy over points or balls, for exact nearest-item
+//! queries (exam question Q8): [`SphereBvh`].
 //!
 //! Every node holds a sphere that encloses its points; a query keeps the best
 //! distance `d` found so far and never descends into a node whose sphere
@@ -16,6 +16,11 @@
 //! always a true nearest point (the one with the smallest index among exact
 //! ties), for every finite input, including coordinates whose squares
 //! underflow or overflow.
+//!
+//! An index built with [`SphereBvh::from_spheres`] holds balls and measures
+//! the distance from the query to each ball, `max(0, |c - q| - r)`; near-ties
+//! are decided exactly there too (`predicates::ball`: the square roots are
+//! squared away with case analysis, leaving integer polynomials of degree 4).
 //!
 //! # Spheres, memory and build
 //! Built top-down by median splits along the widest axis (in parallel with
@@ -64,12 +69,15 @@ pub const MAX_POINTS: usize = u32::MAX as usize;
 pub struct Nearest {
     /// The point's position in the slice the index was built from.
     pub index: usize,
-    /// The point.
+    /// The point (for an index built from spheres, the ball's centre).
     pub point: DVec3,
     /// Its Euclidean distance to the query, within 4 ulps of the exact
     /// distance (relative error below `3.5 * 2^-53`), unless that distance
-    /// is subnormal or above `f64::MAX` (then it is `inf`). Which point is
-    /// returned never depends on this rounding.
+    /// is subnormal or above `f64::MAX` (then it is `inf`). For an index
+    /// built from spheres, the distance to the ball, `max(0, |c - q| - r)`,
+    /// computed from that distance to the centre (so within 4 ulps of
+    /// `|c - q|`, absolutely). Which item is returned never depends on this
+    /// rounding.
     pub distance: f64,
 }
 
@@ -171,6 +179,9 @@ pub struct SphereBvh {
     pub(crate) zs: Vec<f64>,
     /// The original index of each reordered point.
     pub(crate) index: Vec<u32>,
+    /// Item radii in tree order, for an index built from spheres; empty for
+    /// points.
+    pub(crate) radii: Vec<f64>,
     pub(crate) nodes: Vec<Node>,
     /// The root's sphere and link; `None` for an empty index.
     pub(crate) root: Option<Child>,
@@ -205,9 +216,57 @@ impl SphereBvh {
                 return Err(InputError::NonFinite { argument: "points" });
             }
             max_abs = max_abs.max(p.abs().max_element());
-            entries.push(build::Entry { p, index: i as u32 });
+            entries.push(build::Entry {
+                p,
+                r: 0.0,
+                index: i as u32,
+            });
         }
-        Ok(build::build(entries, max_abs))
+        Ok(build::build(entries, max_abs, false))
+    }
+
+    /// Builds the index over balls `(centre, radius)`: queries then measure
+    /// the distance from the query to each ball, `max(0, |c - q| - r)` (zero
+    /// inside), and compare those exactly; [`Nearest::point`] is the centre.
+    ///
+    /// Errors: [`InputError::NonFinite`] (argument `"spheres"`) for a NaN or
+    /// infinite centre coordinate or an infinite radius;
+    /// [`InputError::InvalidRadius`] (argument `"spheres"`) for a negative
+    /// or NaN radius; [`InputError::TooManyItems`] above [`MAX_POINTS`].
+    ///
+    /// ```
+    /// use exactray::SphereBvh;
+    /// let balls = [([0.0, 0.0, 0.0], 1.0), ([5.0, 0.0, 0.0], 3.0)];
+    /// let bvh = SphereBvh::from_spheres(&balls).unwrap();
+    /// // 2.5 from the first ball's surface, 0.5 from the second's.
+    /// let hit = bvh.nearest([3.5, 0.0, 0.0]).unwrap();
+    /// assert_eq!((hit.index, hit.distance), (1, 0.0));
+    /// let hit = bvh.nearest([-2.0, 0.0, 0.0]).unwrap();
+    /// assert_eq!((hit.index, hit.distance), (0, 1.0));
+    /// ```
+    pub fn from_spheres<P: IntoDVec3>(spheres: &[(P, f64)]) -> Result<SphereBvh, InputError> {
+        if spheres.len() > MAX_POINTS {
+            return Err(InputError::TooManyItems { max: MAX_POINTS });
+        }
+        let argument = "spheres";
+        let mut max_abs = 0.0f64;
+        let mut entries = Vec::with_capacity(spheres.len());
+        for (i, &(c, r)) in spheres.iter().enumerate() {
+            let p = c.into_dvec3();
+            if r.is_nan() || r < 0.0 {
+                return Err(InputError::InvalidRadius { argument });
+            }
+            if !p.is_finite() || r.is_infinite() {
+                return Err(InputError::NonFinite { argument });
+            }
+            max_abs = max_abs.max(p.abs().max_element()).max(r);
+            entries.push(build::Entry {
+                p,
+                r,
+                index: i as u32,
+            });
+        }
+        Ok(build::build(entries, max_abs, true))
     }
 
     /// The number of points.
@@ -227,6 +286,7 @@ impl SphereBvh {
     pub fn memory_bytes(&self) -> usize {
         (self.xs.capacity() + self.ys.capacity() + self.zs.capacity()) * 8
             + self.index.capacity() * 4
+            + self.radii.capacity() * 8
             + self.nodes.capacity() * core::mem::size_of::<Node>()
     }
 
@@ -264,10 +324,14 @@ impl SphereBvh {
     #[inline]
     pub(crate) fn answer(&self, i: usize, q: DVec3) -> Nearest {
         let point = self.point(i);
+        let to_centre = distance(point, q);
         Nearest {
             index: self.index[i] as usize,
             point,
-            distance: distance(point, q),
+            distance: match self.radii.get(i) {
+                Some(&r) => (to_centre - r).max(0.0),
+                None => to_centre,
+            },
         }
     }
 }

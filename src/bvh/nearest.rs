@@ -1,13 +1,17 @@
 //! Nearest and k-nearest queries: exact answers from `f64` distances, with
 //! exact comparisons only for near-ties.
 
+use super::sphere::UNDERFLOW_DISTANCE;
 use super::traverse::{Visitor, reach_of, scale_of, walk};
-use super::{Counter, Nearest, QueryStats, SphereBvh};
+use super::{Child, Counter, Nearest, QueryStats, SphereBvh, sqrt};
 use crate::error::InputError;
 use crate::point::IntoDVec3;
+use crate::predicates::ball::{cmp_ball_distances, cmp_length_to_sum};
 use crate::predicates::cmp_lengths;
+use crate::predicates::distance;
 use crate::predicates::grain::TINY;
 use crate::sign::Sign;
+use core::marker::PhantomData;
 use glam::DVec3;
 
 /// `u = 2^-53`.
@@ -26,7 +30,7 @@ const BAND_SLACK: f64 = 32.0 * TINY;
 
 /// A best-so-far distance and the band around it.
 #[derive(Clone, Copy, Debug)]
-struct Band {
+pub(crate) struct Band {
     /// Above this, certainly farther than the best.
     hi: f64,
     /// Below this, certainly nearer than the best.
@@ -43,49 +47,183 @@ impl Band {
     fn around(d2: f64) -> Band {
         Band {
             hi: d2 * (1.0 + BAND) + BAND_SLACK,
-            lo: d2 * (1.0 - BAND) - BAND_SLACK,
+            lo: overflow_floor(d2, d2 * (1.0 - BAND) - BAND_SLACK),
         }
     }
 }
 
-/// Whether the point at tree position `i` (computed squared distance `d2`)
-/// comes strictly before the answer `(j, point_j)` at band `band`: nearer,
-/// or exactly as near with a smaller original index.
+/// `lo`, or 0 when `d2` overflowed: an infinite computed distance (two
+/// coordinates near `f64::MAX` of opposite signs) says nothing of the exact
+/// one except that it is large, so it must not look certainly farther.
+#[inline(always)]
+fn overflow_floor(d2: f64, lo: f64) -> f64 {
+    if d2 < f64::INFINITY { lo } else { 0.0 }
+}
+
+/// How a query measures items: points by computed squared scaled distance,
+/// balls by computed scaled distance to the ball. A candidate's key and the
+/// band of keys its exact value may have; an exact comparison for the rest.
+pub(crate) trait Metric {
+    /// The key of tree position `i` at computed squared scaled distance
+    /// `d2`, and the band it certainly lies in as a candidate.
+    fn candidate(tree: &SphereBvh, i: usize, d2: f64, s: f64) -> (f64, Band);
+    /// The band of an answer with key `key` and candidate band `band`:
+    /// another candidate whose band lies wholly above it is certainly
+    /// farther, wholly below it certainly nearer.
+    fn answer_band(key: f64, band: Band) -> Band;
+    /// An upper bound (for the prune) of the exact scaled distance of an
+    /// answer whose band tops out at `hi`.
+    fn reach(hi: f64) -> f64;
+    /// The exact sign of (distance of `i`) - (distance of `j`), tree positions.
+    fn exact(tree: &SphereBvh, q: DVec3, i: usize, j: usize) -> Sign;
+    /// Whether item `i` (computed squared scaled distance `d2`) lies at
+    /// exact distance at most `r` from `q`; `rs2` is the computed `(r s)^2`.
+    fn within(tree: &SphereBvh, q: DVec3, item: (usize, f64), s: f64, radius: (f64, f64)) -> bool;
+}
+
+/// Points: the key is the squared distance, and the answer's band (16u
+/// each way, see [`BAND`]) covers the errors of both sides.
+pub(crate) struct Points;
+
+impl Metric for Points {
+    #[inline(always)]
+    fn candidate(_: &SphereBvh, _: usize, d2: f64, _: f64) -> (f64, Band) {
+        (
+            d2,
+            Band {
+                hi: d2,
+                lo: overflow_floor(d2, d2),
+            },
+        )
+    }
+    #[inline(always)]
+    fn answer_band(key: f64, _: Band) -> Band {
+        Band::around(key)
+    }
+    #[inline(always)]
+    fn reach(hi: f64) -> f64 {
+        reach_of(hi)
+    }
+    #[inline]
+    fn exact(tree: &SphereBvh, q: DVec3, i: usize, j: usize) -> Sign {
+        cmp_lengths(tree.point(i), q, tree.point(j), q)
+    }
+    #[inline]
+    fn within(
+        tree: &SphereBvh,
+        q: DVec3,
+        (i, d2): (usize, f64),
+        _: f64,
+        (r, rs2): (f64, f64),
+    ) -> bool {
+        match distance::filtered(d2, rs2) {
+            Some(sign) => sign == Sign::Negative,
+            None => {
+                cmp_lengths(tree.point(i), q, DVec3::new(r, 0.0, 0.0), DVec3::ZERO)
+                    != Sign::Positive
+            }
+        }
+    }
+}
+
+/// Balls: the key is `max(0, sqrt(d2) - r s)`. Its error: `sqrt(d2)` is
+/// within `3.5u` of the exact `|c - q| s` (the squared norm's `gamma_5`
+/// halved, plus the `sqrt` rounding) and `2^-535` (underflow, see
+/// `traverse.rs`), `r s` within `2^-1075`, the subtraction adds `u` of the
+/// result, and clamping at zero does not increase an error. `8u (sqrt(d2) +
+/// r s) + 2^-530` bounds it all.
+pub(crate) struct Balls;
+
+impl Metric for Balls {
+    #[inline(always)]
+    fn candidate(tree: &SphereBvh, i: usize, d2: f64, s: f64) -> (f64, Band) {
+        let (root, r) = (sqrt(d2), tree.radii[i] * s);
+        let key = (root - r).max(0.0);
+        let err = 8.0 * U * (root + r) + UNDERFLOW_DISTANCE;
+        (
+            key,
+            Band {
+                hi: key + err,
+                lo: overflow_floor(d2, key - err),
+            },
+        )
+    }
+    #[inline(always)]
+    fn answer_band(_: f64, band: Band) -> Band {
+        band
+    }
+    #[inline(always)]
+    fn reach(hi: f64) -> f64 {
+        // The prune wants 7u and 2^-529 over the exact distance; `hi` bounds
+        // it already, this adds the margins (see `traverse::reach_of`).
+        hi * (1.0 + 8.0 * U) + 2.0 * UNDERFLOW_DISTANCE
+    }
+    #[inline]
+    fn exact(tree: &SphereBvh, q: DVec3, i: usize, j: usize) -> Sign {
+        let ball = |k: usize| (tree.point(k), tree.radii[k]);
+        cmp_ball_distances(q, ball(i), ball(j))
+    }
+    #[inline]
+    fn within(
+        tree: &SphereBvh,
+        q: DVec3,
+        (i, d2): (usize, f64),
+        s: f64,
+        (r, _): (f64, f64),
+    ) -> bool {
+        let (_, band) = Self::candidate(tree, i, d2, s);
+        // `r s` is exact or, below `2^-1022`, off by `2^-1075`; its margin
+        // here is `u` relative and `2^-1073`.
+        let rs = r * s;
+        let margin = rs * U + 2.0 * TINY;
+        if band.hi < rs - margin {
+            true
+        } else if band.lo > rs + margin {
+            false
+        } else {
+            cmp_length_to_sum(q, tree.point(i), r, tree.radii[i]) != Sign::Positive
+        }
+    }
+}
+
+/// Whether candidate `i` (band `cand`) comes strictly before the answer at
+/// tree position `j` (band `band`): nearer, or exactly as near with a
+/// smaller original index.
 #[inline]
-fn before<C: Counter>(
+fn before<M: Metric, C: Counter>(
     tree: &SphereBvh,
     q: DVec3,
-    i: usize,
-    d2: f64,
-    other: (usize, DVec3),
-    band: &Band,
+    (i, cand): (usize, Band),
+    (j, band): (usize, Band),
     counter: &mut C,
 ) -> bool {
-    if d2 < band.lo {
+    if cand.hi < band.lo {
         return true;
     }
-    if d2 > band.hi {
+    if cand.lo > band.hi {
         return false;
     }
     counter.exact();
-    match cmp_lengths(tree.point(i), q, other.1, q) {
+    match M::exact(tree, q, i, j) {
         Sign::Negative => true,
         Sign::Positive => false,
-        Sign::Zero => (tree.index[i] as usize) < other.0,
+        Sign::Zero => tree.index[i] < tree.index[j],
     }
 }
 
 /// The nearest-point visitor.
-struct Best<'c, C> {
+struct Best<'c, M, C> {
     q: DVec3,
+    s: f64,
     /// Tree position of the best so far (`usize::MAX`: none yet).
     at: usize,
     band: Band,
     reach: f64,
     counter: &'c mut C,
+    metric: PhantomData<M>,
 }
 
-impl<C: Counter> Visitor for Best<'_, C> {
+impl<M: Metric, C: Counter> Visitor for Best<'_, M, C> {
     type Counter = C;
     #[inline(always)]
     fn counter(&mut self) -> &mut C {
@@ -99,23 +237,16 @@ impl<C: Counter> Visitor for Best<'_, C> {
 
     #[inline(always)]
     fn point(&mut self, tree: &SphereBvh, i: usize, d2: f64) {
-        if d2 > self.band.hi {
+        let (key, cand) = M::candidate(tree, i, d2, self.s);
+        if cand.lo > self.band.hi {
             return;
         }
         let better = self.at == usize::MAX
-            || before(
-                tree,
-                self.q,
-                i,
-                d2,
-                (tree.index[self.at] as usize, tree.point(self.at)),
-                &self.band,
-                self.counter,
-            );
+            || before::<M, C>(tree, self.q, (i, cand), (self.at, self.band), self.counter);
         if better {
             self.at = i;
-            self.band = Band::around(d2);
-            self.reach = reach_of(self.band.hi);
+            self.band = M::answer_band(key, cand);
+            self.reach = M::reach(self.band.hi);
         }
     }
 }
@@ -172,13 +303,29 @@ impl SphereBvh {
         if !q.is_finite() {
             return None;
         }
+        if self.radii.is_empty() {
+            self.nearest_by::<Points, C>(root, q, counter)
+        } else {
+            self.nearest_by::<Balls, C>(root, q, counter)
+        }
+    }
+
+    #[inline]
+    fn nearest_by<M: Metric, C: Counter>(
+        &self,
+        root: &Child,
+        q: DVec3,
+        counter: &mut C,
+    ) -> Option<Nearest> {
         let s = scale_of(self, q);
-        let mut best = Best {
+        let mut best = Best::<M, C> {
             q,
+            s,
             at: usize::MAX,
             band: Band::OPEN,
             reach: f64::INFINITY,
             counter,
+            metric: PhantomData,
         };
         walk(self, root, q, s, &mut best);
         if best.at == usize::MAX {
@@ -188,19 +335,22 @@ impl SphereBvh {
     }
 }
 
-/// The k-nearest visitor: `out[..n]` sorted, each entry's `distance` holding
-/// its computed squared scaled distance until the walk ends.
-struct KBest<'o, 'c, C> {
+/// The k-nearest visitor: `out[..n]` sorted. While the walk runs, an
+/// entry's `index` is its tree position and its `point` holds its band
+/// `(lo, hi, 0)`; both are replaced when the walk ends.
+struct KBest<'o, 'c, M, C> {
     q: DVec3,
+    s: f64,
     out: &'o mut [Nearest],
     n: usize,
     reach: f64,
     /// Above this, certainly not among the k nearest (once `n == k`).
     hi: f64,
     counter: &'c mut C,
+    metric: PhantomData<M>,
 }
 
-impl<C: Counter> Visitor for KBest<'_, '_, C> {
+impl<M: Metric, C: Counter> Visitor for KBest<'_, '_, M, C> {
     type Counter = C;
     #[inline(always)]
     fn counter(&mut self) -> &mut C {
@@ -214,16 +364,21 @@ impl<C: Counter> Visitor for KBest<'_, '_, C> {
 
     #[inline]
     fn point(&mut self, tree: &SphereBvh, i: usize, d2: f64) {
-        if d2 > self.hi {
+        let (key, cand) = M::candidate(tree, i, d2, self.s);
+        if cand.lo > self.hi {
             return;
         }
         let k = self.out.len();
+        let band_of = |e: &Nearest| Band {
+            lo: e.point.x,
+            hi: e.point.y,
+        };
         // Where the candidate goes: after every entry it does not come before.
         let mut at = self.n;
         while at > 0 {
-            let e = self.out[at - 1];
-            let band = Band::around(e.distance);
-            if !before(tree, self.q, i, d2, (e.index, e.point), &band, self.counter) {
+            let e = &self.out[at - 1];
+            let entry = (e.index, band_of(e));
+            if !before::<M, C>(tree, self.q, (i, cand), entry, self.counter) {
                 break;
             }
             at -= 1;
@@ -233,15 +388,16 @@ impl<C: Counter> Visitor for KBest<'_, '_, C> {
         }
         let last = self.n.min(k - 1);
         self.out.copy_within(at..last, at + 1);
+        let band = M::answer_band(key, cand);
         self.out[at] = Nearest {
-            index: tree.index[i] as usize,
-            point: tree.point(i),
-            distance: d2,
+            index: i,
+            point: DVec3::new(band.lo, band.hi, 0.0),
+            distance: key,
         };
         self.n = (self.n + 1).min(k);
         if self.n == k {
-            self.hi = Band::around(self.out[k - 1].distance).hi;
-            self.reach = reach_of(self.hi);
+            self.hi = band_of(&self.out[k - 1]).hi;
+            self.reach = M::reach(self.hi);
         }
     }
 }
@@ -288,20 +444,36 @@ impl SphereBvh {
         if out.is_empty() || !q.is_finite() {
             return 0;
         }
+        let n = if self.radii.is_empty() {
+            self.nearest_k_by::<Points, C>(root, q, out, counter)
+        } else {
+            self.nearest_k_by::<Balls, C>(root, q, out, counter)
+        };
+        for e in &mut out[..n] {
+            *e = self.answer(e.index, q);
+        }
+        n
+    }
+
+    fn nearest_k_by<M: Metric, C: Counter>(
+        &self,
+        root: &Child,
+        q: DVec3,
+        out: &mut [Nearest],
+        counter: &mut C,
+    ) -> usize {
         let s = scale_of(self, q);
-        let mut kbest = KBest {
+        let mut kbest = KBest::<M, C> {
             q,
+            s,
             out,
             n: 0,
             reach: f64::INFINITY,
             hi: f64::INFINITY,
             counter,
+            metric: PhantomData,
         };
         walk(self, root, q, s, &mut kbest);
-        let n = kbest.n;
-        for e in &mut kbest.out[..n] {
-            e.distance = super::distance(e.point, q);
-        }
-        n
+        kbest.n
     }
 }

@@ -1,26 +1,27 @@
-//! Within-radius queries: every point at exact distance at most `r`.
+//! Within-radius queries: every point (or ball) at exact distance at most `r`.
 
+use super::nearest::{Balls, Metric, Points};
 use super::traverse::{Visitor, reach_of, scale_of, walk};
-use super::{Nearest, SphereBvh};
+use super::{Child, Nearest, SphereBvh};
 use crate::error::InputError;
 use crate::point::IntoDVec3;
-use crate::predicates::{cmp_lengths, distance};
-use crate::sign::Sign;
+use core::marker::PhantomData;
 use glam::DVec3;
 
-struct Within<F> {
+struct Within<M, F> {
     q: DVec3,
-    /// `(r, 0, 0)`: the exact comparison measures `|p - q|` against it.
-    r: DVec3,
+    s: f64,
+    r: f64,
     /// Computed `(r s)^2`.
     r2: f64,
     reach: f64,
     found: usize,
     f: F,
     no_counter: (),
+    metric: PhantomData<M>,
 }
 
-impl<F: FnMut(Nearest)> Visitor for Within<F> {
+impl<M: Metric, F: FnMut(Nearest)> Visitor for Within<M, F> {
     type Counter = ();
     #[inline(always)]
     fn counter(&mut self) -> &mut () {
@@ -34,11 +35,7 @@ impl<F: FnMut(Nearest)> Visitor for Within<F> {
 
     #[inline]
     fn point(&mut self, tree: &SphereBvh, i: usize, d2: f64) {
-        let inside = match distance::filtered(d2, self.r2) {
-            Some(sign) => sign == Sign::Negative,
-            None => cmp_lengths(tree.point(i), self.q, self.r, DVec3::ZERO) != Sign::Positive,
-        };
-        if inside {
+        if M::within(tree, self.q, (i, d2), self.s, (self.r, self.r2)) {
             self.found += 1;
             (self.f)(tree.answer(i, self.q));
         }
@@ -88,16 +85,34 @@ impl SphereBvh {
         // An upper bound of the exact `(r s)^2`, for the prune; the filter
         // takes the computed square, whose error it bounds itself.
         let r2 = rs * rs;
-        let mut within = Within {
+        let reach = reach_of(r2 * (1.0 + 4.0 * f64::EPSILON));
+        Ok(if self.radii.is_empty() {
+            self.within_by::<Points, _>(root, q, (r, r2, reach), f)
+        } else {
+            self.within_by::<Balls, _>(root, q, (r, r2, reach), f)
+        })
+    }
+
+    fn within_by<M: Metric, F: FnMut(Nearest)>(
+        &self,
+        root: &Child,
+        q: DVec3,
+        (r, r2, reach): (f64, f64, f64),
+        f: F,
+    ) -> usize {
+        let s = scale_of(self, q);
+        let mut within = Within::<M, F> {
             q,
-            r: DVec3::new(r, 0.0, 0.0),
+            s,
+            r,
             r2,
-            reach: reach_of(r2 * (1.0 + 4.0 * f64::EPSILON)),
+            reach,
             found: 0,
             f,
             no_counter: (),
+            metric: PhantomData,
         };
         walk(self, root, q, s, &mut within);
-        Ok(within.found)
+        within.found
     }
 }

@@ -95,6 +95,7 @@ fn dist2(p: DVec3, q: DVec3, s: f64) -> f64 {
 pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64, v: &mut V) {
     let mut stack = [(0u32, 0u32, 0.0f64, 0.0f64); STACK];
     let mut top = 0;
+    let points = tree.radii.is_empty();
     let mut next = (
         root.link,
         root.len,
@@ -117,15 +118,17 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                     (d[0] * d[0] + d[1] * d[1] + d[2] * d[2], node.r[k] * s)
                 };
                 let ((da, ra), (db, rb)) = (lane(0), lane(1));
-                // The side of the split plane `q` is on comes first; the
-                // other side is at least `|offset|` away.
+                // Points: the side of the split plane `q` is on comes first,
+                // and the other side is at least `|offset|` away. Balls may
+                // straddle the plane: nearer centre first, no plane bound.
                 let qa = match node.axis {
                     0 => q.x,
                     1 => q.y,
                     _ => q.z,
                 };
-                let offset = (qa - node.split) * s;
-                let (near, far) = if offset <= 0.0 { (0, 1) } else { (1, 0) };
+                let offset = if points { (qa - node.split) * s } else { 0.0 };
+                let first = if points { offset <= 0.0 } else { da <= db };
+                let (near, far) = if first { (0, 1) } else { (1, 0) };
                 let (dn, rn, df, rf) = if near == 0 {
                     (da, ra, db, rb)
                 } else {

@@ -1,10 +1,13 @@
 //! orient2d: the sign of `(b - a) x (c - a)`, exact for every finite input.
 //!
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
-//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+//! exact, adaptive (`robust`), scaled filter, big-integer exact. The
+//! small-integer stage has a quick entry (`unit_integer`) tried first for
+//! every input the filter declines: it answers almost all near-degenerate,
+//! degenerate and tiny inputs before the cold path.
 
 use super::batch::Lanes;
-use super::grain::{Grain, TINY, in_range, scale_pow2, split, to_integer_i64, unit_scale};
+use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale};
 use super::sparse;
 use super::wide::Wide;
 use crate::sign::Sign;
@@ -46,7 +49,7 @@ const SCALED_SLACK: f64 = 64.0 * TINY;
 pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Sign {
     match filtered(a, b, c, 0.0) {
         Ok(s) => s,
-        Err(detsum) => exact(a, b, c, in_range(detsum)),
+        Err(detsum) => declined(a, b, c, detsum),
     }
 }
 
@@ -105,10 +108,67 @@ pub(super) fn certifies(margin: f64) -> bool {
     margin > UNDERFLOW_SLACK
 }
 
-/// Stages 2 to 5 for an input stage 1 declined, given its `detsum`.
-#[inline(always)]
+/// Stages 2 to 5 for an input stage 1 declined, given its `detsum`: first
+/// the quick integer entry (`unit_integer`), which answers almost every
+/// near-degenerate, degenerate and tiny input without leaving this
+/// function, then the cold ladder.
+#[inline(never)]
 pub(super) fn declined(a: DVec2, b: DVec2, c: DVec2, detsum: f64) -> Sign {
-    exact(a, b, c, in_range(detsum))
+    match unit_integer(a, b, c, detsum) {
+        Some(sign) => sign,
+        None => exact(a, b, c, in_range(detsum)),
+    }
+}
+
+/// `2^61`, the fixed part of `unit_integer`'s scale.
+const TWO_61: f64 = pow2(61);
+
+/// Stage 2, quick entry, branch-light: each axis scaled by the power of two
+/// `2^s` that puts its largest magnitude `m` just below `2^62`, when that
+/// scaling is upwards (`m < 2^62`); then, if every scaled value is an
+/// integer, the determinant in `i128` (`integer_det`). `None` when some
+/// scaled value is not an integer (an axis spanning more than 62 bits) or
+/// for magnitudes of `2^62` or more.
+///
+/// `detsum` is stage 1's: only finite when every coordinate is (each one
+/// enters a difference that enters a product, and a non-finite difference
+/// makes its product, hence `detsum`, infinite or NaN).
+///
+/// Exact: let `E <= 1084` be `m`'s exponent field (`m < 2^62`); then
+/// `m < 2^(E - 1022)` for `E >= 1` and `m < 2^-1022` for `E = 0`, and
+/// `g = 2^(1023 - E)` (built from its bits; its field `2046 - E >= 962` is
+/// normal) gives `s = 61 + 1023 - E >= 0` with `m * 2^s < 2^62` in both
+/// cases. Each value is first scaled by `2^61` (up: exact, below `2^123`)
+/// and then by `g`, which leaves `x * 2^s` with `s >= 0`: exact as well,
+/// since scaling up never rounds (a subnormal's significand times a power
+/// of two is representable) and nothing reaches `2^62`. For a finite
+/// `|y| < 2^62`, truncation to `i64` is exact and defined, and `trunc(y)`
+/// is representable, so the round trip returns `y` exactly when `y` is an
+/// integer (`-0.0` compares equal to `0.0`). The differences of the
+/// integers are then below `2^63` and the determinant below `2^127`.
+#[inline(always)]
+fn unit_integer(a: DVec2, b: DVec2, c: DVec2, detsum: f64) -> Option<Sign> {
+    if !detsum.is_finite() {
+        return None;
+    }
+    let max = |p: DVec2, q: DVec2| DVec2::select(p.cmpgt(q), p, q);
+    let m = max(max(a.abs(), b.abs()), c.abs());
+    if !m.cmplt(DVec2::splat(pow2(62))).all() {
+        return None;
+    }
+    const FIELD: u64 = 0x7ff << 52;
+    let g = |m: f64| f64::from_bits((2046 << 52) - (m.to_bits() & FIELD));
+    let g = DVec2::new(g(m.x), g(m.y));
+    let y = [a, b, c].map(|p| p * TWO_61 * g);
+    // SAFETY: every `y` is finite (as `detsum` is) and below `2^62` in
+    // magnitude (see above), so truncating it to an `i64` is defined.
+    let n = y.map(|y| unsafe { [y.x.to_int_unchecked::<i64>(), y.y.to_int_unchecked::<i64>()] });
+    let back = n.map(|n| DVec2::new(n[0] as f64, n[1] as f64));
+    let integer = back[0].cmpeq(y[0]) & back[1].cmpeq(y[1]) & back[2].cmpeq(y[2]);
+    if !integer.all() {
+        return None;
+    }
+    Some(integer_det(n.map(|n| n[0]), n.map(|n| n[1])))
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
@@ -201,4 +261,55 @@ pub(super) fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> S
     let left = Wide::<67>::mul(&dx(b, a), &dy(c, a));
     let right = Wide::<67>::mul(&dy(b, a), &dx(c, a));
     left.sub(&right).sign()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hard_inputs::{InputClass, SplitMix64, orient2d_case, step_ulps};
+
+    /// The big-integer stage alone: exact for every finite input.
+    fn dense(a: DVec2, b: DVec2, c: DVec2) -> Sign {
+        let gx = Grain::of(&[a.x, b.x, c.x]);
+        let gy = Grain::of(&[a.y, b.y, c.y]);
+        if gx.all_zero() || gy.all_zero() {
+            return Sign::Zero;
+        }
+        big_integer(a, b, c, gx.lo_min, gy.lo_min)
+    }
+
+    #[test]
+    fn unit_integer_is_exact_or_declines() {
+        let mut rng = SplitMix64::new(77);
+        let mut answered = 0;
+        for i in 0..120_000 {
+            let [mut a, mut b, mut c] = orient2d_case(InputClass::ALL[i % 6], &mut rng);
+            // Now and then, values at the edges of the quick stage's range:
+            // just below and at `2^62`, subnormal, signed zeros.
+            match i % 7 {
+                0 => a.x = step_ulps(pow2(62), -((i / 7) as i64 % 3)),
+                1 => b.y = -0.0,
+                2 => c = DVec2::new(f64::from_bits(i as u64 % 5), -f64::from_bits(3)),
+                _ => {}
+            }
+            let (detleft, detright) = (products(a, b, c).x, products(a, b, c).y);
+            let (_, detsum, _) = stage_a_lanes(detleft, detright);
+            if let Some(sign) = unit_integer(a, b, c, detsum) {
+                answered += 1;
+                assert_eq!(sign, dense(a, b, c), "{a} {b} {c}");
+            }
+            assert_eq!(declined(a, b, c, detsum), dense(a, b, c), "{a} {b} {c}");
+        }
+        assert!(answered > 50_000, "{answered}");
+    }
+
+    #[test]
+    fn unit_integer_turns_away_non_finite() {
+        let p = DVec2::new(1.0, 2.0);
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let q = DVec2::new(bad, 0.5);
+            assert_eq!(unit_integer(p, q, p, bad), None);
+            assert_eq!(orient2d(p, q, DVec2::ZERO), Sign::Zero);
+        }
+    }
 }

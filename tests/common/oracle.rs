@@ -229,6 +229,63 @@ pub fn within(q: [f64; 3], p: [f64; 3], r: f64) -> bool {
     d2 <= &v[6] * &v[6]
 }
 
+/// The exact ordering of the distances from `q` to two balls,
+/// `max(0, |c - q| - r)`, by squaring out the roots: for both outside,
+/// `sqrt(a) - r1` against `sqrt(b) - r2` is the sign of
+/// `sqrt(a) - sqrt(b) - k` with `k = r1 - r2`.
+pub fn compare_ball_distance(
+    q: [f64; 3],
+    (c1, r1): ([f64; 3], f64),
+    (c2, r2): ([f64; 3], f64),
+) -> core::cmp::Ordering {
+    use core::cmp::Ordering::*;
+    let v = common_integers(&[&q[..], &c1[..], &c2[..], &[r1, r2]].concat());
+    let sq = |o: usize| -> BigInt {
+        (0..3)
+            .map(|k| (&v[o + k] - &v[k]) * (&v[o + k] - &v[k]))
+            .sum()
+    };
+    let (a, b, r1, r2) = (sq(3), sq(6), v[9].clone(), v[10].clone());
+    let (in1, in2) = (a <= &r1 * &r1, b <= &r2 * &r2);
+    match (in1, in2) {
+        (true, true) => return Equal,
+        (true, false) => return Less,
+        (false, true) => return Greater,
+        _ => {}
+    }
+    // sign(sqrt(x) - sqrt(y) - k), k >= 0.
+    let cmp = |x: &BigInt, y: &BigInt, k: &BigInt| {
+        let m = x - y - k * k;
+        if m.is_negative() {
+            Less
+        } else if m.is_zero() {
+            if k.is_zero() || y.is_zero() {
+                Equal
+            } else {
+                Less
+            }
+        } else {
+            (&m * &m).cmp(&(BigInt::from(4) * k * k * y))
+        }
+    };
+    let k = &r1 - &r2;
+    if k.is_negative() {
+        cmp(&b, &a, &-k).reverse()
+    } else {
+        cmp(&a, &b, &k)
+    }
+}
+
+/// Whether the ball `(c, rc)` comes within `r` of `q`: `|c - q| <= r + rc`.
+pub fn ball_within(q: [f64; 3], (c, rc): ([f64; 3], f64), r: f64) -> bool {
+    let v = common_integers(&[&q[..], &c[..], &[r, rc]].concat());
+    let d2: BigInt = (0..3)
+        .map(|k| (&v[3 + k] - &v[k]) * (&v[3 + k] - &v[k]))
+        .sum();
+    let sum = &v[6] + &v[7];
+    d2 <= &sum * &sum
+}
+
 #[cfg(test)]
 mod oracle_self_test {
     use super::*;
