@@ -27,10 +27,12 @@ extern crate std;
 #[cfg(feature = "alloc")]
 pub mod bvh;
 pub mod error;
+mod float;
 pub mod hard_inputs;
 pub mod inputs;
 pub mod point;
 pub mod predicates;
+pub mod roots;
 pub mod sign;
 #[cfg(feature = "proptest")]
 pub mod strategies;

@@ -354,16 +354,4 @@ pub(crate) fn distance(p: DVec3, q: DVec3) -> f64 {
     sqrt(v.x * v.x + v.y * v.y + v.z * v.z) * pow2(-k) * unscale
 }
 
-/// `sqrt`, correctly rounded (IEEE 754 requires it of both): the hardware
-/// instruction through `std`, `libm` (which uses it too on x86-64) without.
-#[inline(always)]
-pub(crate) fn sqrt(x: f64) -> f64 {
-    #[cfg(feature = "std")]
-    {
-        x.sqrt()
-    }
-    #[cfg(not(feature = "std"))]
-    {
-        libm::sqrt(x)
-    }
-}
+pub(crate) use crate::float::sqrt;
