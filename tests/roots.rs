@@ -10,61 +10,7 @@ use common::oracle;
 use exactray::InputError;
 use exactray::hard_inputs::step_ulps;
 use exactray::roots::{Roots, solve_quadratic, try_solve_quadratic};
-use num_bigint::BigInt;
-use num_traits::Signed;
 use proptest::prelude::*;
-
-/// The exact sign of `b^2 - 4ac`.
-fn discriminant_sign(a: f64, b: f64, c: f64) -> i32 {
-    let v = oracle::common_integers(&[a, b, c]);
-    let d = &v[1] * &v[1] - BigInt::from(4) * &v[0] * &v[2];
-    d.signum().try_into().unwrap()
-}
-
-/// The exact sign of `sum_k coeffs[k] x^(d - k)`, `d = coeffs.len() - 1`.
-/// Over the smallest exponent `e` every number is `N 2^e`, and term `k` is
-/// `C_k X^(d-k) 2^(e (1 + d - k))`. Divided by the positive `2^(e (1 + d))`
-/// (for `e <= 0`) or `2^e` (for `e > 0`), each term is an integer:
-/// `C_k X^(d-k) 2^(-e k)` or `C_k X^(d-k) 2^(e (d - k))`.
-fn horner_sign(coeffs: &[f64], x: f64) -> i32 {
-    let values: Vec<f64> = coeffs.iter().copied().chain([x]).collect();
-    let e = values
-        .iter()
-        .map(|&v| oracle::exact_parts(v).1)
-        .min()
-        .unwrap() as i64;
-    let v = oracle::common_integers(&values);
-    let d = coeffs.len() as i64 - 1;
-    let x = &v[coeffs.len()];
-    let total: BigInt = (0..=d)
-        .map(|k| {
-            let term = &v[k as usize] * x.pow((d - k) as u32);
-            let shift = if e <= 0 { -e * k } else { e * (d - k) };
-            term << shift as usize
-        })
-        .sum();
-    total.signum().try_into().unwrap()
-}
-
-/// The exact sign of `a t^2 + b t + c`.
-fn value_sign(a: f64, b: f64, c: f64, t: f64) -> i32 {
-    horner_sign(&[a, b, c], t)
-}
-
-/// Whether the exact polynomial (with `a != 0`) has a root within `k` ulps
-/// of `t`.
-fn root_near(a: f64, b: f64, c: f64, t: f64, k: i64) -> bool {
-    let (lo, hi) = (step_ulps(t, -k), step_ulps(t, k));
-    let (slo, shi) = (value_sign(a, b, c, lo), value_sign(a, b, c, hi));
-    if slo * shi <= 0 {
-        return true;
-    }
-    // Both ends on the same side: a root lies between only if the vertex
-    // -b / 2a does and the discriminant is non-negative.
-    // sign(2a x + b), the derivative, changes sign at the vertex.
-    let slope = |x: f64| horner_sign(&[2.0 * a, b], x);
-    slope(lo) * slope(hi) <= 0 && discriminant_sign(a, b, c) >= 0
-}
 
 fn check(a: f64, b: f64, c: f64) -> Result<(), TestCaseError> {
     let roots = solve_quadratic(a, b, c);
@@ -79,7 +25,7 @@ fn check(a: f64, b: f64, c: f64) -> Result<(), TestCaseError> {
         prop_assert_eq!(roots.count(), want);
         return Ok(());
     }
-    let want = match discriminant_sign(a, b, c) {
+    let want = match oracle::discriminant_sign(a, b, c) {
         1 => 2,
         0 => 1,
         _ => 0,
@@ -95,7 +41,7 @@ fn check(a: f64, b: f64, c: f64) -> Result<(), TestCaseError> {
     };
     for t in ts {
         prop_assert!(
-            root_near(a, b, c, t, 4),
+            oracle::quadratic_root_near(a, b, c, t, 4),
             "{} {} {}: root {} not within 4 ulps",
             a,
             b,

@@ -286,6 +286,63 @@ pub fn ball_within(q: [f64; 3], (c, rc): ([f64; 3], f64), r: f64) -> bool {
     d2 <= &sum * &sum
 }
 
+/// The exact sign of `sum_k coeffs[k] x^(d - k)`, `d = coeffs.len() - 1`.
+/// Over the smallest exponent `e` every number is `N 2^e`, and term `k` is
+/// `C_k X^(d-k) 2^(e (1 + d - k))`. Divided by the positive `2^(e (1 + d))`
+/// (for `e <= 0`) or `2^e` (for `e > 0`), each term is an integer:
+/// `C_k X^(d-k) 2^(-e k)` or `C_k X^(d-k) 2^(e (d - k))`.
+pub fn polynomial_sign(coeffs: &[f64], x: f64) -> i8 {
+    weighted_polynomial_sign(coeffs, &vec![1; coeffs.len()], x)
+}
+
+/// [`polynomial_sign`] with each coefficient multiplied by an integer
+/// weight first (so that `2a` cannot overflow).
+pub fn weighted_polynomial_sign(coeffs: &[f64], weights: &[i64], x: f64) -> i8 {
+    let values: Vec<f64> = coeffs.iter().copied().chain([x]).collect();
+    let e = values.iter().map(|&v| exact_parts(v).1).min().unwrap() as i64;
+    let v = common_integers(&values);
+    let d = coeffs.len() as i64 - 1;
+    let x = &v[coeffs.len()];
+    let total: BigInt = (0..=d)
+        .map(|k| {
+            let term = &v[k as usize] * weights[k as usize] * x.pow((d - k) as u32);
+            let shift = if e <= 0 { -e * k } else { e * (d - k) };
+            term << shift as usize
+        })
+        .sum();
+    sign(&total)
+}
+
+/// The exact sign of `b^2 - 4ac`.
+pub fn discriminant_sign(a: f64, b: f64, c: f64) -> i8 {
+    let v = common_integers(&[a, b, c]);
+    sign(&(&v[1] * &v[1] - BigInt::from(4) * &v[0] * &v[2]))
+}
+
+/// `t` moved by `k` ulps (finite results only; the caller keeps away from
+/// the largest values).
+fn ulps_from(t: f64, k: i64) -> f64 {
+    // Order-preserving map of the bits to integers, stepped, mapped back.
+    let bits = t.to_bits() as i64;
+    let ordered = if bits < 0 { i64::MIN - bits } else { bits };
+    let moved = ordered + k;
+    f64::from_bits((if moved < 0 { i64::MIN - moved } else { moved }) as u64)
+}
+
+/// Whether `a t^2 + b t + c` (`a != 0`) has an exact root within `k` ulps
+/// of `t`: it changes sign across `[t - k ulps, t + k ulps]`, or its vertex
+/// (where `2a x + b` changes sign) lies there and the discriminant is not
+/// negative.
+pub fn quadratic_root_near(a: f64, b: f64, c: f64, t: f64, k: i64) -> bool {
+    let (lo, hi) = (ulps_from(t, -k), ulps_from(t, k));
+    let value = |x: f64| polynomial_sign(&[a, b, c], x);
+    if value(lo) * value(hi) <= 0 {
+        return true;
+    }
+    let slope = |x: f64| weighted_polynomial_sign(&[a, b], &[2, 1], x);
+    slope(lo) * slope(hi) <= 0 && discriminant_sign(a, b, c) >= 0
+}
+
 #[cfg(test)]
 mod oracle_self_test {
     use super::*;
