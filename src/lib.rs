@@ -3,9 +3,11 @@
 //! # exactray
 //!
 //! Geometric queries that are fast and right: exact orientation, in-circle,
-//! in-sphere and plane-side predicates for **every** finite `f64` input, with
-//! a measured speed-against-error report beside the crates a user would
-//! otherwise pick (see the README).
+//! in-sphere and plane-side predicates for **every** finite `f64` input
+//! ([`predicates`]), an exact nearest-point index over a hierarchy of
+//! bounding spheres ([`bvh`], with `alloc`), and a stable quadratic solver
+//! ([`roots`]), with a measured speed-against-error report beside the crates
+//! a user would otherwise pick (see the README).
 //!
 //! ```
 //! use exactray::{orient3d, same_side, Sign, SideRelation};
@@ -15,7 +17,8 @@
 //! assert_eq!(same_side(x0, x1, x2, DVec3::Z, -DVec3::Z), SideRelation::Opposite);
 //! ```
 //!
-//! Features: `std` (default; implies `alloc`), `alloc`, `proptest`
+//! Features: `std` (default; implies `alloc`), `rayon` (default; parallel
+//! batch queries and builds of the index), `alloc` (the [`bvh`] module), `proptest`
 //! (strategies for hard inputs, for users' property tests), `arbitrary`
 //! (`Arbitrary` for the predicate input types, for users' fuzz targets).
 

@@ -94,7 +94,7 @@ fn sign_bits(det: f64) -> Sign {
 /// [`orient2d`](super::orient2d) of every case `[a, b, c]` in `cases`,
 /// written to `out`: `out[i]` is `orient2d(a, b, c)` of `cases[i]`. Answers
 /// `min(cases.len(), out.len())` cases and returns that count (see the
-/// [module docs](self)).
+/// [module docs](crate::predicates)).
 ///
 /// ```
 /// use exactray::predicates::orient2d_many;
@@ -242,7 +242,7 @@ fn orient2d_many_in<P: IntoDVec2>(cases: &[[P; 3]], out: &mut [Sign]) -> usize {
 /// [`orient3d`](super::orient3d) of every case `[a, b, c, d]` in `cases`,
 /// written to `out`: `out[i]` is `orient3d(a, b, c, d)` of `cases[i]`.
 /// Answers `min(cases.len(), out.len())` cases and returns that count (see
-/// the [module docs](self)).
+/// the [module docs](crate::predicates)).
 ///
 /// ```
 /// use exactray::predicates::orient3d_many;
