@@ -26,6 +26,15 @@ pub enum InputError {
         /// The parameter name of the offending argument.
         argument: &'static str,
     },
+    /// A ray's direction is the zero vector.
+    ZeroDirection,
+    /// A parameter that may be infinite but not NaN is NaN.
+    NotANumber {
+        /// The parameter name of the offending argument.
+        argument: &'static str,
+    },
+    /// An interval whose lower bound exceeds its upper bound.
+    ReversedInterval,
     /// Two slices that must have the same length do not.
     LengthMismatch {
         /// The length the first slice named in the function's docs has.
@@ -48,6 +57,11 @@ impl fmt::Display for InputError {
             }
             InputError::InvalidRadius { argument } => {
                 write!(f, "argument `{argument}` is a negative or NaN radius")
+            }
+            InputError::ZeroDirection => write!(f, "the ray's direction is zero"),
+            InputError::NotANumber { argument } => write!(f, "argument `{argument}` is NaN"),
+            InputError::ReversedInterval => {
+                write!(f, "the interval's lower bound exceeds its upper bound")
             }
             InputError::LengthMismatch { expected, got } => {
                 write!(f, "slice lengths differ: {expected} and {got}")

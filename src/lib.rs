@@ -35,6 +35,7 @@ pub mod hard_inputs;
 pub mod inputs;
 pub mod point;
 pub mod predicates;
+pub mod ray;
 pub mod roots;
 pub mod sign;
 #[cfg(feature = "proptest")]
