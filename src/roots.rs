@@ -24,6 +24,7 @@
 
 use crate::error::InputError;
 use crate::float::{fma, sqrt};
+use crate::predicates::grain::unit_pow2;
 
 /// The real roots of a quadratic (or lower-degree) polynomial.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -83,7 +84,7 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> Roots {
     if m == 0.0 {
         return Roots::All;
     }
-    let k = scale_exponent(m);
+    let k = unit_pow2(m);
     let (a, b, c) = (a * k, b * k, c * k);
     if a == 0.0 {
         return if b == 0.0 {
@@ -137,14 +138,4 @@ fn discriminant(a: f64, b: f64, c: f64) -> f64 {
     let dp = fma(b, b, -p);
     let dq = fma(4.0 * a, c, -q);
     (p - q) + (dp - dq)
-}
-
-/// The power of two `2^s` with `m * 2^s` in `[0.5, 1)` (clamped to the
-/// normal range).
-#[inline]
-fn scale_exponent(m: f64) -> f64 {
-    let field = ((m.to_bits() >> 52) & 0x7ff) as i32;
-    // m in [2^(field - 1023), 2^(field - 1022)); aim for [0.5, 1).
-    let s = (1022 - field).clamp(-1000, 1000);
-    f64::from_bits(((s + 1023) as u64) << 52)
 }

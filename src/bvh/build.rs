@@ -4,7 +4,7 @@
 
 use super::sphere::{merge, norm2_root_up, sum_up, unscale_up};
 use super::{Child, LEAF, Node, SphereBvh};
-use crate::predicates::grain::{pow2, unit_scale};
+use crate::predicates::grain::unit_pow2;
 use alloc::vec::Vec;
 use glam::DVec3;
 
@@ -22,16 +22,10 @@ pub(crate) struct Entry {
 #[cfg(feature = "rayon")]
 const PARALLEL_MIN: usize = 1 << 15;
 
-/// The power of two that brings the largest coordinate near 1, within the
-/// range where `pow2` is exact.
-pub(crate) fn scale_for(max_abs: f64) -> f64 {
-    pow2(unit_scale(&[max_abs]).clamp(-1000, 1000))
-}
-
 /// Builds the index; `entries` are finite.
 /// `balls`: keep the radii (an index of spheres).
 pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> SphereBvh {
-    let scale = scale_for(max_abs);
+    let scale = unit_pow2(max_abs);
     let mut nodes = Vec::with_capacity(entries.len() / 4 + 1);
     let root = if entries.is_empty() {
         None

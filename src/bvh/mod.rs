@@ -52,7 +52,7 @@ mod traverse;
 
 use crate::error::InputError;
 use crate::point::IntoDVec3;
-use crate::predicates::grain::{pow2, unit_scale};
+use crate::predicates::grain::unit_pow2;
 use alloc::vec::Vec;
 use glam::DVec3;
 
@@ -349,9 +349,9 @@ pub(crate) fn distance(p: DVec3, q: DVec3) -> f64 {
         d = p * 0.5 - q * 0.5;
         unscale = 2.0;
     }
-    let k = unit_scale(&[d.abs().max_element()]).clamp(-1000, 1000);
-    let v = d * pow2(k);
-    sqrt(v.x * v.x + v.y * v.y + v.z * v.z) * pow2(-k) * unscale
+    let s = unit_pow2(d.abs().max_element());
+    let v = d * s;
+    sqrt(v.x * v.x + v.y * v.y + v.z * v.z) / s * unscale
 }
 
 pub(crate) use crate::float::sqrt;

@@ -211,7 +211,10 @@ fn before<M: Metric, C: Counter>(
     }
 }
 
-/// The nearest-point visitor.
+/// The nearest-point visitor. [`KBest`] with `k = 1` gives the same
+/// answers, but its ordered insertion measured 7% more instructions per
+/// query (callgrind, 10^4 uniform points), so the single best keeps this
+/// lighter update.
 struct Best<'c, M, C> {
     q: DVec3,
     s: f64,

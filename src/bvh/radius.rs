@@ -87,20 +87,19 @@ impl SphereBvh {
         let r2 = rs * rs;
         let reach = reach_of(r2 * (1.0 + 4.0 * f64::EPSILON));
         Ok(if self.radii.is_empty() {
-            self.within_by::<Points, _>(root, q, (r, r2, reach), f)
+            self.within_by::<Points, _>(root, (q, s), (r, r2, reach), f)
         } else {
-            self.within_by::<Balls, _>(root, q, (r, r2, reach), f)
+            self.within_by::<Balls, _>(root, (q, s), (r, r2, reach), f)
         })
     }
 
     fn within_by<M: Metric, F: FnMut(Nearest)>(
         &self,
         root: &Child,
-        q: DVec3,
+        (q, s): (DVec3, f64),
         (r, r2, reach): (f64, f64, f64),
         f: F,
     ) -> usize {
-        let s = scale_of(self, q);
         let mut within = Within::<M, F> {
             q,
             s,

@@ -9,7 +9,7 @@
 
 use super::sphere::UNDERFLOW_DISTANCE;
 use super::{Child, Counter, LEAF, SphereBvh, sqrt};
-use crate::predicates::grain::{pow2, unit_scale};
+use crate::predicates::grain::unit_pow2;
 use glam::DVec3;
 
 /// `u = 2^-53`.
@@ -78,8 +78,7 @@ pub(crate) fn reach_of(hi: f64) -> f64 {
 /// The scale of a query at `q` (finite) in `tree`.
 #[inline]
 pub(crate) fn scale_of(tree: &SphereBvh, q: DVec3) -> f64 {
-    let m = tree.max_abs.max(q.abs().max_element());
-    pow2(unit_scale(&[m]).clamp(-1000, 1000))
+    unit_pow2(tree.max_abs.max(q.abs().max_element()))
 }
 
 /// Computed squared norm of `(p - q) * s`.

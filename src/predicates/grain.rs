@@ -74,6 +74,15 @@ pub(crate) fn unit_scale(values: &[f64]) -> i32 {
     -(e + 64 - m.leading_zeros() as i32)
 }
 
+/// `2^s` with `s = unit_scale(&[m])` clamped to `[-1000, 1000]`: the power
+/// of two that brings `m` into `[1/2, 1)`, or as near as the clamp allows;
+/// it and its reciprocal are normal, so scaling by either is exact unless
+/// the result leaves the normal range.
+#[inline]
+pub(crate) fn unit_pow2(m: f64) -> f64 {
+    pow2(unit_scale(&[m]).clamp(-1000, 1000))
+}
+
 /// Whether a filter that failed saw magnitudes (its permanent) where its
 /// bound had no underflow or overflow to absorb: then the input is
 /// genuinely near-degenerate and rescaling it cannot help. `false` for NaN.

@@ -220,13 +220,9 @@ impl ExactPointSet {
     }
 }
 
-/// Whether `|p - q| <= r`, exactly.
+/// Whether `|p - q| <= r`, exactly: a ball of radius 0.
 pub fn within(q: [f64; 3], p: [f64; 3], r: f64) -> bool {
-    let v = common_integers(&[q[0], q[1], q[2], p[0], p[1], p[2], r]);
-    let d2: BigInt = (0..3)
-        .map(|k| (&v[3 + k] - &v[k]) * (&v[3 + k] - &v[k]))
-        .sum();
-    d2 <= &v[6] * &v[6]
+    ball_within(q, (p, 0.0), r)
 }
 
 /// The exact ordering of the distances from `q` to two balls,
