@@ -29,14 +29,16 @@
 //! encloses them. A parent's sphere encloses every point below it: it is the
 //! smaller of the smallest sphere around its two children's spheres and the
 //! sphere around its own points' bounding-box centre. The second is usually
-//! the smaller, and choosing it cut the nodes a query visits from 132 to 50
-//! on 10^6 uniform points (counted with [`QueryStats`]). Every radius is
+//! the smaller: while the tree was developed (leaves of 8 points then),
+//! choosing it cut the nodes a query visits on 10^6 uniform points from 132
+//! to 50 (counted with [`QueryStats`]); the current tree visits 40 (the
+//! report's `nearest` notes). Every radius is
 //! rounded up with a proven margin (`sphere.rs`), so it bounds the exact
 //! distances. Each node also keeps its median split plane, a second lower
 //! bound for the far child.
 //!
 //! Tightness, from `cargo test --test bvh leaf_spheres -- --nocapture`: leaf
-//! radii average 1.09x (uniform points) and 1.06x (clustered points) the
+//! radii average 1.09x (uniform points) and 1.07x (clustered points) the
 //! radius of the minimal enclosing sphere of the same points.
 //!
 //! Memory ([`SphereBvh::memory_bytes`]): 28 bytes per point (coordinates and
