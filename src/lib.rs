@@ -35,8 +35,10 @@ pub mod hard_inputs;
 pub mod inputs;
 pub mod point;
 pub mod predicates;
+pub mod query;
 pub mod ray;
 pub mod roots;
+pub mod shape;
 pub mod sign;
 #[cfg(feature = "proptest")]
 pub mod strategies;
