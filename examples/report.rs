@@ -12,6 +12,8 @@
 //! [`FAMILIES`]. (A crate root looks for its modules beside itself, hence the
 //! `#[path]`s.)
 
+#[path = "../tests/common/line_oracle.rs"]
+mod line_oracle;
 #[path = "../tests/common/oracle.rs"]
 mod oracle;
 
@@ -23,6 +25,8 @@ mod heap;
 mod output;
 #[path = "report/plot.rs"]
 mod plot;
+#[path = "report/ray_family.rs"]
+mod ray_family;
 #[path = "report/signs.rs"]
 mod signs;
 #[path = "report/targets.rs"]
@@ -42,6 +46,8 @@ mod orient2d;
 mod orient3d;
 #[path = "report/plane_side.rs"]
 mod plane_side;
+#[path = "report/ray_sphere.rs"]
+mod ray_sphere;
 
 use framework::{Config, Row};
 use std::time::Instant;
@@ -58,6 +64,7 @@ const FAMILIES: &[(&str, Family)] = &[
     ("plane_side", |cfg| plane_side::family().run(cfg)),
     ("nearest", nearest::run),
     ("nearest_build", nearest_build::run),
+    ("ray_sphere", |cfg| ray_sphere::family().run(cfg)),
 ];
 
 fn main() -> std::io::Result<()> {

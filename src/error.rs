@@ -28,6 +28,12 @@ pub enum InputError {
     },
     /// A ray's direction is the zero vector.
     ZeroDirection,
+    /// A shape parameter that makes the shape degenerate: a zero axis or
+    /// normal, all-zero quadric coefficients, a zero cone radius.
+    Degenerate {
+        /// The parameter name of the offending argument.
+        argument: &'static str,
+    },
     /// A parameter that may be infinite but not NaN is NaN.
     NotANumber {
         /// The parameter name of the offending argument.
@@ -59,6 +65,9 @@ impl fmt::Display for InputError {
                 write!(f, "argument `{argument}` is a negative or NaN radius")
             }
             InputError::ZeroDirection => write!(f, "the ray's direction is zero"),
+            InputError::Degenerate { argument } => {
+                write!(f, "argument `{argument}` makes the shape degenerate")
+            }
             InputError::NotANumber { argument } => write!(f, "argument `{argument}` is NaN"),
             InputError::ReversedInterval => {
                 write!(f, "the interval's lower bound exceeds its upper bound")

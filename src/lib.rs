@@ -30,6 +30,7 @@ extern crate std;
 #[cfg(feature = "alloc")]
 pub mod bvh;
 pub mod error;
+mod extended;
 mod float;
 pub mod hard_inputs;
 pub mod inputs;

@@ -112,14 +112,15 @@ pub fn method<C, O, F: Fn(&C) -> O + 'static>(name: &'static str, f: F) -> Box<d
 /// Nanoseconds per case of each method: the median over `cfg.reps` timed
 /// loops. Repetitions interleave the methods so that a slow spell of a
 /// shared machine hits all of them alike and their ratios stay fair.
-pub fn time_methods<C, O>(
+pub fn time_methods<C, O, M: AsRef<dyn Measure<C, O>>>(
     cfg: &Config,
     cases: &[C],
-    methods: &[Box<dyn Measure<C, O>>],
+    methods: &[M],
 ) -> Vec<f64> {
     let iters: Vec<u64> = methods
         .iter()
         .map(|m| {
+            let m = m.as_ref();
             // Warm up, then size the loop to last at least `min_loop`.
             let mut n = 1;
             loop {
@@ -135,7 +136,7 @@ pub fn time_methods<C, O>(
     let mut samples = vec![Vec::with_capacity(cfg.reps); methods.len()];
     for _ in 0..cfg.reps {
         for ((m, &n), s) in methods.iter().zip(&iters).zip(&mut samples) {
-            let t = m.run_loop(cases, n);
+            let t = m.as_ref().run_loop(cases, n);
             s.push(t.as_secs_f64() * 1e9 / (n as f64 * cases.len() as f64));
         }
     }

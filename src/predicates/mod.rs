@@ -81,7 +81,7 @@ mod orient2d;
 mod orient3d;
 pub mod plane_side;
 mod sparse;
-mod wide;
+pub(crate) mod wide;
 
 use crate::error::InputError;
 use crate::point::{IntoDVec2, IntoDVec3};

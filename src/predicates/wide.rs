@@ -7,6 +7,7 @@
 //! predicate uses it), so wrapping never happens.
 
 use super::grain::split;
+use crate::extended::Extended;
 use crate::sign::Sign;
 
 /// A signed integer of `N` 64-bit limbs (two's complement, little-endian).
@@ -73,6 +74,28 @@ impl<const N: usize> Wide<N> {
         } else {
             Sign::Zero
         }
+    }
+
+    /// The value times `2^lo`, correctly rounded to 53 significant bits:
+    /// the top 64 bits of the magnitude with a sticky bit for the rest
+    /// convert to `f64` with one correct rounding.
+    pub(crate) fn to_extended(&self, lo: i32) -> Extended {
+        let (mag, len, neg) = self.magnitude();
+        if len == 0 {
+            return Extended::ZERO;
+        }
+        let hi = mag[len - 1];
+        let lz = hi.leading_zeros();
+        let below = if len >= 2 { mag[len - 2] } else { 0 };
+        let mut top = if lz == 0 { hi } else { hi << lz | below >> (64 - lz) };
+        let rest_nonzero = (lz > 0 && below << lz != 0)
+            || (lz == 0 && below != 0)
+            || mag[..len.saturating_sub(2)].iter().any(|&l| l != 0);
+        top |= rest_nonzero as u64;
+        // The integer has 64 (len - 1) + 64 - lz bits; `top` holds the top 64.
+        let e = 64 * (len as i32 - 1) - lz as i32 + lo;
+        let m = top as f64;
+        Extended::new(if neg { -m } else { m }, e)
     }
 
     /// `-self` (wrapping).
@@ -266,6 +289,19 @@ mod tests {
             sparse.mul_sparse_add(&x[..lx], &y[..ly]);
             assert_eq!(dense.limbs, sparse.limbs, "{x:?} {y:?}");
         }
+    }
+
+    #[test]
+    fn conversion_rounds_correctly() {
+        let w = Wide::<4>::from_i64_shifted(3, 200);
+        assert_eq!(w.to_extended(-200).to_f64(), 3.0);
+        // 2^53 + 1 rounds to even (2^53); 2^53 + 1 + 2^-100 rounds up.
+        let tie = Wide::<4>::from_i64_shifted((1 << 53) + 1, 100);
+        assert_eq!(tie.to_extended(-100).to_f64(), 2f64.powi(53));
+        let above = tie.add(&Wide::<4>::from_i64(1));
+        assert_eq!(above.to_extended(-100).to_f64(), 2f64.powi(53) + 2.0);
+        assert_eq!(above.neg().to_extended(-100).to_f64(), -(2f64.powi(53) + 2.0));
+        assert!(Wide::<4>::ZERO.to_extended(5).is_zero());
     }
 
     #[test]

@@ -1,1 +1,2 @@
+pub mod line_oracle;
 pub mod oracle;

@@ -32,3 +32,42 @@ pub trait RayCast {
         self.cast(ray, range).is_some()
     }
 }
+
+mod cone;
+mod cylinder;
+mod plane;
+pub(crate) mod quadratic;
+mod quadric;
+mod sphere;
+
+use crate::roots::Roots;
+
+/// The smallest root inside `range`; for [`Roots::All`] (the line lies on
+/// the surface) the point of `range` nearest `t = 0`.
+#[inline]
+pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
+    match roots {
+        Roots::None => None,
+        Roots::One(t) => range.contains(t).then_some(t),
+        Roots::Two(t1, t2) => {
+            if range.contains(t1) {
+                Some(t1)
+            } else {
+                range.contains(t2).then_some(t2)
+            }
+        }
+        Roots::All => Some(range.min().max(range.max().min(0.0))),
+    }
+}
+
+/// `v` normalized, or `fallback` normalized when `v` is zero or too small
+/// to normalize (a point sphere, a cone's apex).
+#[inline]
+pub(crate) fn unit_or(v: DVec3, fallback: DVec3) -> DVec3 {
+    let n = v.normalize_or_zero();
+    if n == DVec3::ZERO {
+        fallback.normalize_or_zero()
+    } else {
+        n
+    }
+}

@@ -1,0 +1,67 @@
+use super::{finite, nonzero, radius};
+use crate::error::InputError;
+use crate::point::IntoDVec3;
+use glam::DVec3;
+
+/// The plane through `point` with normal `normal` (any non-zero length):
+/// `(x - point) . normal = 0`. Hits report the normal as given, normalized.
+///
+/// ```
+/// use exactray::shape::Plane;
+/// use exactray::query::ray::RayCast;
+/// use exactray::ray::{Interval, Ray};
+/// let floor = Plane::new([0.0, 0.0, 0.0], [0.0, 0.0, 2.0]).unwrap();
+/// let ray = Ray::new([1.0, 1.0, 4.0], [0.0, 0.0, -2.0]).unwrap();
+/// assert_eq!(floor.cast(&ray, Interval::FORWARD).unwrap().t, 2.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane {
+    pub(crate) point: DVec3,
+    pub(crate) normal: DVec3,
+}
+
+impl Plane {
+    /// A plane. Errors: [`InputError::NonFinite`] (`"point"`, `"normal"`),
+    /// [`InputError::Degenerate`] for a zero normal.
+    pub fn new(point: impl IntoDVec3, normal: impl IntoDVec3) -> Result<Plane, InputError> {
+        Ok(Plane {
+            point: finite("point", point)?,
+            normal: nonzero("normal", normal)?,
+        })
+    }
+}
+
+/// The disk of radius `radius` around `center` in the plane with normal
+/// `normal`: a cylinder's cap, or an area light.
+///
+/// ```
+/// use exactray::shape::Disk;
+/// use exactray::query::ray::RayCast;
+/// use exactray::ray::{Interval, Ray};
+/// let disk = Disk::new([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0).unwrap();
+/// let down = |x: f64| Ray::new([x, 0.0, 1.0], [0.0, 0.0, -1.0]).unwrap();
+/// assert!(disk.hits(&down(0.5), Interval::FORWARD));
+/// assert!(!disk.hits(&down(1.5), Interval::FORWARD));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Disk {
+    pub(crate) plane: Plane,
+    pub(crate) radius: f64,
+}
+
+impl Disk {
+    /// A disk. Errors: as for [`Plane::new`] (`"center"` for the first
+    /// argument), and [`InputError::InvalidRadius`] for a negative or NaN
+    /// radius.
+    pub fn new(
+        center: impl IntoDVec3,
+        normal: impl IntoDVec3,
+        radius_: f64,
+    ) -> Result<Disk, InputError> {
+        let center = finite("center", center)?;
+        Ok(Disk {
+            plane: Plane::new(center, normal)?,
+            radius: radius("radius", radius_)?,
+        })
+    }
+}

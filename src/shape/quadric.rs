@@ -1,0 +1,57 @@
+use crate::error::InputError;
+use glam::DVec3;
+
+/// The quadric surface
+/// `A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0`,
+/// from its ten coefficients `[A, B, C, D, E, F, G, H, I, J]`. Its normal
+/// at a point is the normalized gradient.
+///
+/// ```
+/// use exactray::shape::Quadric;
+/// use exactray::query::ray::RayCast;
+/// use exactray::ray::{Interval, Ray};
+/// use exactray::roots::Roots;
+/// // The paraboloid z = x^2 + y^2.
+/// let bowl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]).unwrap();
+/// let down = Ray::new([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]).unwrap();
+/// assert_eq!(bowl.line_roots(&down), Roots::One(4.0));
+/// assert_eq!(bowl.cast(&down, Interval::FORWARD).unwrap().point.to_array(), [1.0, 0.0, 1.0]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quadric {
+    pub(crate) k: [f64; 10],
+}
+
+impl Quadric {
+    /// A quadric. Errors: [`InputError::NonFinite`] naming `"coefficients"`
+    /// for a NaN or infinite coefficient, [`InputError::Degenerate`] when
+    /// all are zero (every point would lie on it).
+    pub fn new(coefficients: [f64; 10]) -> Result<Quadric, InputError> {
+        let argument = "coefficients";
+        if coefficients.iter().any(|v| !v.is_finite()) {
+            return Err(InputError::NonFinite { argument });
+        }
+        if coefficients.iter().all(|&v| v == 0.0) {
+            return Err(InputError::Degenerate { argument });
+        }
+        Ok(Quadric { k: coefficients })
+    }
+
+    /// The coefficients `[A, B, C, D, E, F, G, H, I, J]`.
+    #[inline]
+    pub fn coefficients(&self) -> [f64; 10] {
+        self.k
+    }
+
+    /// The gradient at `x` (not normalized): `2 M x + (G, H, I)` for the
+    /// symmetric matrix `M` of the quadratic part.
+    #[inline]
+    pub fn gradient(&self, x: DVec3) -> DVec3 {
+        let [a, b, c, d, e, f, g, h, i, _] = self.k;
+        DVec3::new(
+            2.0 * a * x.x + d * x.y + e * x.z + g,
+            d * x.x + 2.0 * b * x.y + f * x.z + h,
+            e * x.x + f * x.y + 2.0 * c * x.z + i,
+        )
+    }
+}

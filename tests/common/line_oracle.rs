@@ -1,0 +1,323 @@
+//! Exact oracle for lines against quadrics: the polynomial in `t` with
+//! exact dyadic coefficients (every finite f64 is `m * 2^e`, and sums and
+//! products of dyadics are dyadic), its exact root count, and its roots
+//! rounded correctly to f64 by bisection on exact signs.
+//!
+//! Shared by `tests/`, `fuzz/` and the report via `#[path]`.
+#![allow(dead_code)]
+
+use super::oracle::exact_parts;
+use num_bigint::BigInt;
+use num_traits::{Signed, Zero};
+
+/// `m * 2^e`, exactly.
+#[derive(Clone, Debug)]
+pub struct Dyadic {
+    m: BigInt,
+    e: i64,
+}
+
+impl Dyadic {
+    pub fn from_f64(v: f64) -> Dyadic {
+        let (m, e) = exact_parts(v);
+        Dyadic { m, e: e as i64 }
+    }
+
+    pub fn int(v: i64) -> Dyadic {
+        Dyadic {
+            m: BigInt::from(v),
+            e: 0,
+        }
+    }
+
+    pub fn add(&self, o: &Dyadic) -> Dyadic {
+        let e = self.e.min(o.e);
+        Dyadic {
+            m: (&self.m << (self.e - e) as usize) + (&o.m << (o.e - e) as usize),
+            e,
+        }
+    }
+
+    pub fn sub(&self, o: &Dyadic) -> Dyadic {
+        self.add(&o.neg())
+    }
+
+    pub fn neg(&self) -> Dyadic {
+        Dyadic {
+            m: -&self.m,
+            e: self.e,
+        }
+    }
+
+    pub fn mul(&self, o: &Dyadic) -> Dyadic {
+        Dyadic {
+            m: &self.m * &o.m,
+            e: self.e + o.e,
+        }
+    }
+
+    pub fn half(&self) -> Dyadic {
+        Dyadic {
+            m: self.m.clone(),
+            e: self.e - 1,
+        }
+    }
+
+    pub fn sign(&self) -> i8 {
+        if self.m.is_zero() {
+            0
+        } else if self.m.is_positive() {
+            1
+        } else {
+            -1
+        }
+    }
+}
+
+/// A vector of dyadics.
+pub type V3 = [Dyadic; 3];
+
+pub fn v3(p: [f64; 3]) -> V3 {
+    p.map(Dyadic::from_f64)
+}
+
+pub fn sub3(a: &V3, b: &V3) -> V3 {
+    core::array::from_fn(|k| a[k].sub(&b[k]))
+}
+
+pub fn dot3(a: &V3, b: &V3) -> Dyadic {
+    a[0].mul(&b[0]).add(&a[1].mul(&b[1])).add(&a[2].mul(&b[2]))
+}
+
+pub fn cross3(a: &V3, b: &V3) -> V3 {
+    core::array::from_fn(|k| {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        a[i].mul(&b[j]).sub(&a[j].mul(&b[i]))
+    })
+}
+
+/// `a t^2 + b t + c`, exactly.
+#[derive(Clone, Debug)]
+pub struct Quadratic {
+    pub a: Dyadic,
+    pub b: Dyadic,
+    pub c: Dyadic,
+}
+
+/// The exact answer for a line: the number of distinct real roots (`None`
+/// for every `t`) and the roots rounded correctly, ascending.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineAnswer {
+    pub count: Option<usize>,
+    pub roots: Vec<f64>,
+}
+
+/// Order-preserving map from finite f64 to integers.
+pub fn ordered(t: f64) -> i64 {
+    let bits = t.to_bits() as i64;
+    if bits < 0 { i64::MIN - bits } else { bits }
+}
+
+fn from_ordered(k: i64) -> f64 {
+    f64::from_bits((if k < 0 { i64::MIN - k } else { k }) as u64)
+}
+
+/// How many ulps apart two finite values are.
+pub fn ulps_between(x: f64, y: f64) -> u64 {
+    ordered(x).abs_diff(ordered(y))
+}
+
+impl Quadratic {
+    pub fn sphere(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Quadratic {
+        let (d, w) = (v3(d), sub3(&v3(o), &v3(c)));
+        let r = Dyadic::from_f64(r);
+        Quadratic {
+            a: dot3(&d, &d),
+            b: dot3(&w, &d).mul(&Dyadic::int(2)),
+            c: dot3(&w, &w).sub(&r.mul(&r)),
+        }
+    }
+
+    /// `|(o + t d - p) x a|^2 - r^2 |a|^2`.
+    pub fn cylinder(o: [f64; 3], d: [f64; 3], p: [f64; 3], a: [f64; 3], r: f64) -> Quadratic {
+        let a = v3(a);
+        let u = cross3(&sub3(&v3(o), &v3(p)), &a);
+        let v = cross3(&v3(d), &a);
+        let r = Dyadic::from_f64(r);
+        Quadratic {
+            a: dot3(&v, &v),
+            b: dot3(&u, &v).mul(&Dyadic::int(2)),
+            c: dot3(&u, &u).sub(&r.mul(&r).mul(&dot3(&a, &a))),
+        }
+    }
+
+    /// `|a|^2 |w x a|^2 - r^2 (w . a)^2`, `w = o + t d - apex`.
+    pub fn cone(o: [f64; 3], d: [f64; 3], apex: [f64; 3], a: [f64; 3], r: f64) -> Quadratic {
+        let (a, d) = (v3(a), v3(d));
+        let w = sub3(&v3(o), &v3(apex));
+        let s = dot3(&a, &a);
+        let rr = Dyadic::from_f64(r).mul(&Dyadic::from_f64(r));
+        let (u, v) = (cross3(&w, &a), cross3(&d, &a));
+        let (p, q) = (dot3(&w, &a), dot3(&d, &a));
+        Quadratic {
+            a: s.mul(&dot3(&v, &v)).sub(&rr.mul(&q).mul(&q)),
+            b: s.mul(&dot3(&u, &v)).sub(&rr.mul(&p).mul(&q)).mul(&Dyadic::int(2)),
+            c: s.mul(&dot3(&u, &u)).sub(&rr.mul(&p).mul(&p)),
+        }
+    }
+
+    /// The quadric `[A..J]` along `o + t d`.
+    pub fn quadric(o: [f64; 3], d: [f64; 3], k: [f64; 10]) -> Quadratic {
+        let k = k.map(Dyadic::from_f64);
+        // Q(x) with x = o + t d, expanded by evaluating the quadratic form
+        // at (o, 1) and (d, 0) in homogeneous coordinates.
+        let m = |i: usize, j: usize| -> Dyadic {
+            // Entries of 2Q, see the crate's doubled_matrix.
+            let two = Dyadic::int(2);
+            match (i.min(j), i.max(j)) {
+                (0, 0) => k[0].mul(&two),
+                (1, 1) => k[1].mul(&two),
+                (2, 2) => k[2].mul(&two),
+                (3, 3) => k[9].mul(&two),
+                (0, 1) => k[3].clone(),
+                (0, 2) => k[4].clone(),
+                (1, 2) => k[5].clone(),
+                (0, 3) => k[6].clone(),
+                (1, 3) => k[7].clone(),
+                _ => k[8].clone(),
+            }
+        };
+        let x: [Dyadic; 4] = [
+            Dyadic::from_f64(o[0]),
+            Dyadic::from_f64(o[1]),
+            Dyadic::from_f64(o[2]),
+            Dyadic::int(1),
+        ];
+        let y: [Dyadic; 4] = [
+            Dyadic::from_f64(d[0]),
+            Dyadic::from_f64(d[1]),
+            Dyadic::from_f64(d[2]),
+            Dyadic::int(0),
+        ];
+        let form = |u: &[Dyadic; 4], v: &[Dyadic; 4]| {
+            let mut s = Dyadic::int(0);
+            for i in 0..4 {
+                for j in 0..4 {
+                    s = s.add(&u[i].mul(&m(i, j)).mul(&v[j]));
+                }
+            }
+            s
+        };
+        // 2 Q(o + t d) = A t^2 + 2 B t + C; halve it back.
+        Quadratic {
+            a: form(&y, &y).half(),
+            b: form(&y, &x),
+            c: form(&x, &x).half(),
+        }
+    }
+
+    pub fn sign_at(&self, t: &Dyadic) -> i8 {
+        self.a.mul(t).add(&self.b).mul(t).add(&self.c).sign()
+    }
+
+    fn slope_sign_at(&self, t: &Dyadic) -> i8 {
+        self.a.mul(t).mul(&Dyadic::int(2)).add(&self.b).sign()
+    }
+
+    pub fn discriminant_sign(&self) -> i8 {
+        self.b
+            .mul(&self.b)
+            .sub(&self.a.mul(&self.c).mul(&Dyadic::int(4)))
+            .sign()
+    }
+
+    /// The exact number of distinct real roots, `None` when identically 0.
+    pub fn count(&self) -> Option<usize> {
+        if self.a.sign() == 0 {
+            return if self.b.sign() != 0 {
+                Some(1)
+            } else if self.c.sign() == 0 {
+                None
+            } else {
+                Some(0)
+            };
+        }
+        Some(match self.discriminant_sign() {
+            1 => 2,
+            0 => 1,
+            _ => 0,
+        })
+    }
+
+    /// The count and the correctly rounded roots (ties to even), found by
+    /// bisection over the doubles on the monotone branch each root lies on.
+    /// Roots beyond f64's range come out as +-f64::MAX.
+    pub fn answer(&self) -> LineAnswer {
+        let count = self.count();
+        let roots = match count {
+            Some(1) if self.a.sign() == 0 => vec![self.round_root(self.b.sign(), i64::MIN + 1, i64::MAX)],
+            Some(1) => vec![self.round_vertex()],
+            Some(2) => {
+                // Left of the vertex the polynomial runs against sign(a).
+                let v = ordered(self.round_vertex());
+                let s = self.a.sign();
+                vec![
+                    self.round_root(-s, ordered(-f64::MAX), v),
+                    self.round_root(s, v, ordered(f64::MAX)),
+                ]
+            }
+            _ => vec![],
+        };
+        LineAnswer { count, roots }
+    }
+
+    /// `-b / 2a` rounded correctly: the double nearest it is found by
+    /// bisection on the sign of the slope `2 a t + b`.
+    fn round_vertex(&self) -> f64 {
+        // The slope is monotone increasing in t for a > 0 (decreasing else).
+        let s = self.a.sign();
+        self.bisect(|t| s * self.slope_sign_at(t), ordered(-f64::MAX), ordered(f64::MAX))
+    }
+
+    /// The root on a branch where `sign(p(t)) * dir` increases with `t`,
+    /// within ordered bounds `[lo, hi]`.
+    fn round_root(&self, dir: i8, lo: i64, hi: i64) -> f64 {
+        let lo = lo.max(ordered(-f64::MAX));
+        let hi = hi.min(ordered(f64::MAX));
+        self.bisect(|t| dir * self.sign_at(t), lo, hi)
+    }
+
+    /// The double nearest the point where the monotone step function
+    /// `f` (-1 below, +1 above, 0 at) changes, within `[lo, hi]`.
+    fn bisect(&self, f: impl Fn(&Dyadic) -> i8, mut lo: i64, mut hi: i64) -> f64 {
+        let at = |k: i64| f(&Dyadic::from_f64(from_ordered(k)));
+        if at(lo) >= 0 {
+            return from_ordered(lo);
+        }
+        if at(hi) <= 0 {
+            return from_ordered(hi);
+        }
+        // Invariant: f(lo) < 0 < f(hi).
+        while (hi as i128) - (lo as i128) > 1 {
+            let mid = ((lo as i128 + hi as i128) / 2) as i64;
+            match at(mid) {
+                0 => return from_ordered(mid),
+                s if s < 0 => lo = mid,
+                _ => hi = mid,
+            }
+        }
+        let (x, y) = (from_ordered(lo), from_ordered(hi));
+        let midpoint = Dyadic::from_f64(x).add(&Dyadic::from_f64(y)).half();
+        match f(&midpoint) {
+            s if s < 0 => y,
+            s if s > 0 => x,
+            _ => {
+                if x.to_bits() & 1 == 0 {
+                    x
+                } else {
+                    y
+                }
+            }
+        }
+    }
+}

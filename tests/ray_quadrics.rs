@@ -1,0 +1,274 @@
+//! Rays against spheres, cylinders, cones and general quadrics, checked
+//! against the exact oracle (`common/line_oracle.rs`): the root count must
+//! be exact and every root within the stated ulps of the correctly rounded
+//! exact root, on ordinary rays and on the hard ones (far origins, grazing
+//! and exactly tangent rays, origins on the surface, tiny and huge scales,
+//! unnormalized directions).
+
+mod common;
+
+use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
+use exactray::InputError;
+use exactray::query::ray::RayCast;
+use exactray::ray::{Interval, Ray};
+use exactray::roots::Roots;
+use exactray::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
+use proptest::prelude::*;
+
+/// The tolerance the issue sets against the correctly rounded root.
+const ULPS: u64 = 4;
+
+fn check(got: Roots, want: &LineAnswer, what: &str) -> Result<(), TestCaseError> {
+    prop_assert_eq!(got.count(), want.count, "{}: {:?} vs {:?}", what, got, want);
+    let roots: Vec<f64> = match got {
+        Roots::One(t) => vec![t],
+        Roots::Two(a, b) => vec![a, b],
+        _ => vec![],
+    };
+    for (g, w) in roots.iter().zip(&want.roots) {
+        prop_assert!(
+            ulps_between(*g, *w) <= ULPS,
+            "{}: root {} vs correctly rounded {} ({} ulps)",
+            what,
+            g,
+            w,
+            ulps_between(*g, *w)
+        );
+    }
+    Ok(())
+}
+
+fn vec3(range: f64) -> impl Strategy<Value = [f64; 3]> {
+    [-range..range, -range..range, -range..range]
+}
+
+fn pow2(k: i32) -> f64 {
+    2f64.powi(k)
+}
+
+/// A ray aimed at `target` from `origin`, with the direction scaled.
+fn aimed(origin: [f64; 3], target: [f64; 3], scale: f64) -> [f64; 3] {
+    core::array::from_fn(|k| (target[k] - origin[k]) * scale)
+}
+
+fn sphere_case(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Result<(), TestCaseError> {
+    prop_assume!(d != [0.0; 3]);
+    let s = Sphere::new(c, r).unwrap();
+    let ray = Ray::new(o, d).unwrap();
+    check(
+        s.line_roots(&ray),
+        &Quadratic::sphere(o, d, c, r).answer(),
+        &format!("sphere {o:?} {d:?} {c:?} {r}"),
+    )
+}
+
+fn cylinder_case(o: [f64; 3], d: [f64; 3], p: [f64; 3], a: [f64; 3], r: f64) -> Result<(), TestCaseError> {
+    prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
+    let cyl = Cylinder::new(p, a, r).unwrap();
+    let ray = Ray::new(o, d).unwrap();
+    check(
+        cyl.line_roots(&ray),
+        &Quadratic::cylinder(o, d, p, a, r).answer(),
+        &format!("cylinder {o:?} {d:?} {p:?} {a:?} {r}"),
+    )
+}
+
+fn quadric_case(o: [f64; 3], d: [f64; 3], k: [f64; 10]) -> Result<(), TestCaseError> {
+    prop_assume!(d != [0.0; 3] && k.iter().any(|&v| v != 0.0));
+    let q = Quadric::new(k).unwrap();
+    let ray = Ray::new(o, d).unwrap();
+    check(
+        q.line_roots(&ray),
+        &Quadratic::quadric(o, d, k).answer(),
+        &format!("quadric {o:?} {d:?} {k:?}"),
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn sphere_ordinary(o in vec3(4.0), d in vec3(2.0), c in vec3(1.0), r in 0.0..2.0) {
+        sphere_case(o, d, c, r)?;
+    }
+
+    #[test]
+    fn sphere_far(dir in vec3(1.0), k in 20i32..27, aim in vec3(1.2), c in vec3(1.0), s in -20i32..20) {
+        let o: [f64; 3] = core::array::from_fn(|i| dir[i] * pow2(k) + c[i]);
+        let target: [f64; 3] = core::array::from_fn(|i| c[i] + aim[i]);
+        sphere_case(o, aimed(o, target, pow2(s) * 0.37), c, 1.0)?;
+    }
+
+    #[test]
+    fn sphere_grazing(x in -8.0f64..8.0, h in -2.0f64..2.0, ulps in -4i64..4, s in -30i32..30) {
+        // A ray along x at height r moved by a few ulps: tangent or a near miss.
+        let r = 1.0 + h.abs();
+        let y = f64::from_bits((r.to_bits() as i64 + ulps) as u64);
+        sphere_case([x * pow2(s), y * pow2(s), 0.0], [1.0, 0.0, 0.0], [0.0; 3], r * pow2(s))?;
+    }
+
+    #[test]
+    fn sphere_scaled(o in vec3(4.0), d in vec3(2.0), c in vec3(1.0), r in 0.01..2.0, s in -1000i32..1000, sd in -1000i32..1000) {
+        let sc = |v: [f64; 3], k: i32| v.map(|x| x * pow2(k));
+        sphere_case(sc(o, s), sc(d, sd), sc(c, s), r * pow2(s))?;
+    }
+
+    #[test]
+    fn sphere_origin_on_surface(c in vec3(3.0), m in 1i32..20, n in 1i32..20, d in vec3(2.0)) {
+        // Pythagorean points (m^2 - n^2, 2mn) / (m^2 + n^2) on the unit circle.
+        let (m, n) = (m as f64, n as f64);
+        let r = m * m + n * n;
+        let o = [c[0].round() + (m * m - n * n), c[1].round() + 2.0 * m * n, c[2].round()];
+        sphere_case(o, d, [c[0].round(), c[1].round(), c[2].round()], r)?;
+    }
+
+    #[test]
+    fn cylinder_ordinary(o in vec3(4.0), d in vec3(2.0), p in vec3(1.0), a in vec3(2.0), r in 0.0..2.0) {
+        cylinder_case(o, d, p, a, r)?;
+    }
+
+    #[test]
+    fn cylinder_exam(o in vec3(5.0), d in vec3(2.0)) {
+        cylinder_case(o, d, [0.0; 3], [0.0, 1.0, 0.0], 1.0)?;
+    }
+
+    #[test]
+    fn cylinder_parallel(o in vec3(3.0), p in vec3(1.0), a in vec3(2.0), k in -3i32..3, on in any::<bool>()) {
+        // d an exact multiple of a: degree zero; an origin on the axis's
+        // parallel at exactly r gives every t.
+        let a = a.map(|x| (x * 8.0).round() / 8.0);
+        prop_assume!(a != [0.0; 3]);
+        let d = a.map(|x| x * pow2(k));
+        let o = if on { [p[0] + 1.0, p[1], p[2]] } else { o };
+        let ax = [1.0, 0.0, 0.0];
+        cylinder_case(o, d, p, a, 1.0)?;
+        cylinder_case(p.map(|x| x + 0.5), ax.map(|x| x * 3.0), p, ax, 0.5)?;
+    }
+
+    #[test]
+    fn cylinder_far_and_grazing(dir in vec3(1.0), k in 10i32..27, ulps in -3i64..3, a in vec3(1.0)) {
+        prop_assume!(a != [0.0; 3]);
+        // Far along a direction perpendicular-ish to the axis, aimed to pass
+        // at distance 1 (moved by ulps) from the y axis.
+        let y = f64::from_bits((1f64.to_bits() as i64 + ulps) as u64);
+        let o = [-pow2(k), dir[1], y];
+        cylinder_case(o, [1.0, dir[0] * 1e-3, 0.0], [0.0; 3], [0.0, 1.0, 0.0], 1.0)?;
+        cylinder_case(o, [1.0, 0.0, dir[2]], [0.0; 3], a, 1.0)?;
+    }
+
+    #[test]
+    fn cylinder_scaled(o in vec3(4.0), d in vec3(2.0), p in vec3(1.0), a in vec3(2.0), r in 0.01..2.0, s in -900i32..900, sd in -900i32..900, sa in -900i32..900) {
+        let sc = |v: [f64; 3], k: i32| v.map(|x| x * pow2(k));
+        cylinder_case(sc(o, s), sc(d, sd), sc(p, s), sc(a, sa), r * pow2(s))?;
+    }
+
+    #[test]
+    fn quadric_random(o in vec3(3.0), d in vec3(2.0), k in prop::array::uniform10(-2.0f64..2.0)) {
+        quadric_case(o, d, k)?;
+    }
+
+    #[test]
+    fn quadric_degenerate_degrees(o in vec3(3.0), t in vec3(2.0), s in -3i32..3) {
+        // The paraboloid z = x^2 + y^2 along its axis: degree one. The cone
+        // x^2 + y^2 = z^2 along a ruling: degree one or zero.
+        let para = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0];
+        quadric_case(o, [0.0, 0.0, pow2(s)], para)?;
+        let cone = [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let ruling = [t[0].round(), t[1].round(), 0.0];
+        let len2 = ruling[0] * ruling[0] + ruling[1] * ruling[1];
+        prop_assume!(len2 > 0.0);
+        // (3, 4, 5) style rulings are exact for Pythagorean pairs; others
+        // give a near-ruling, which is degree two.
+        quadric_case([0.0; 3], [ruling[0], ruling[1], len2.sqrt()], cone)?;
+        quadric_case([3.0, 4.0, 5.0], [3.0, 4.0, 5.0], cone)?;
+    }
+
+    #[test]
+    fn quadric_scaled(o in vec3(3.0), d in vec3(2.0), k in prop::array::uniform10(-2.0f64..2.0), s in -300i32..300, sd in -900i32..900) {
+        // Scaling space by 2^s scales the quadratic part's coefficients by
+        // 2^-2s and the linear part's by 2^-s.
+        let o = o.map(|x| x * pow2(s));
+        let mut k = k;
+        for (i, v) in k.iter_mut().enumerate() {
+            *v *= match i { 0..=5 => pow2(-2 * s), 6..=8 => pow2(-s), _ => 1.0 };
+        }
+        quadric_case(o, d.map(|x| x * pow2(sd)), k)?;
+    }
+
+    #[test]
+    fn cone_counts_mostly_right(o in vec3(3.0), d in vec3(2.0), a in vec3(2.0), r in 0.1..2.0) {
+        // The cone is documented as not exact; on ordinary rays it agrees.
+        prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
+        let cone = Cone::infinite([0.0; 3], a, r).unwrap();
+        let ray = Ray::new(o, d).unwrap();
+        let want = Quadratic::cone(o, d, [0.0; 3], a, r).answer();
+        let got = cone.line_roots(&ray);
+        if want.count == Some(2) && got.count() == Some(2) {
+            let Roots::Two(t0, t1) = got else { unreachable!() };
+            prop_assert!(ulps_between(t0, want.roots[0]) < 1 << 20 && ulps_between(t1, want.roots[1]) < 1 << 20);
+        }
+    }
+}
+
+#[test]
+fn exam_q1_cylinder() {
+    // x^2 + z^2 = 1 along y: a ray through it and one parallel to the axis.
+    let cyl = Cylinder::new([0.0; 3], [0.0, 1.0, 0.0], 1.0).unwrap();
+    let ray = Ray::new([-2.0, 0.0, 0.0], [1.0, 0.5, 0.0]).unwrap();
+    assert_eq!(cyl.line_roots(&ray), Roots::Two(1.0, 3.0));
+    let range = Interval::new(1.5, 10.0).unwrap();
+    let hit = cyl.cast(&ray, range).unwrap();
+    assert_eq!((hit.t, hit.normal.to_array()), (3.0, [1.0, 0.0, 0.0]));
+    let inside = Ray::new([0.5, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    assert_eq!(cyl.line_roots(&inside), Roots::None);
+    assert!(!cyl.hits(&inside, Interval::FORWARD));
+}
+
+#[test]
+fn capped_shapes_and_disks() {
+    let can = CappedCylinder::new([0.0; 3], [0.0, 0.0, 2.0], 1.0).unwrap();
+    let side = Ray::new([-3.0, 0.0, 1.0], [1.0, 0.0, 0.0]).unwrap();
+    let hit = can.cast(&side, Interval::FORWARD).unwrap();
+    assert_eq!((hit.t, hit.normal.to_array()), (2.0, [-1.0, 0.0, 0.0]));
+    // Above the can: misses the side, and parallel to the caps.
+    let above = Ray::new([-3.0, 0.0, 3.0], [1.0, 0.0, 0.0]).unwrap();
+    assert!(can.cast(&above, Interval::FORWARD).is_none());
+    // Up from below through the base disk.
+    let up = Ray::new([0.5, 0.0, -1.0], [0.0, 0.0, 1.0]).unwrap();
+    let hit = can.cast(&up, Interval::FORWARD).unwrap();
+    assert_eq!((hit.t, hit.normal.to_array()), (1.0, [0.0, 0.0, -1.0]));
+    // The capped cone's base disk, from above.
+    let cone = Cone::new([0.0; 3], [0.0, 0.0, 1.0], 1.0).unwrap();
+    let down = Ray::new([0.25, 0.0, 3.0], [0.0, 0.0, -1.0]).unwrap();
+    let hit = cone.cast(&down, Interval::FORWARD).unwrap();
+    assert_eq!((hit.t, hit.normal.to_array()), (2.0, [0.0, 0.0, 1.0]));
+    // The other nappe does not count.
+    let below = Ray::new([-3.0, 0.0, -0.5], [1.0, 0.0, 0.0]).unwrap();
+    assert!(cone.cast(&below, Interval::FORWARD).is_none());
+    let plane = Plane::new([0.0; 3], [0.0, 1.0, 0.0]).unwrap();
+    let parallel = Ray::new([0.0, 1.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
+    assert!(plane.cast(&parallel, Interval::FORWARD).is_none());
+    let disk = Disk::new([0.0; 3], [0.0, 1.0, 0.0], 2.0).unwrap();
+    let slant = Ray::new([0.0, 1.0, 0.0], [1.0, -1.0, 0.0]).unwrap();
+    assert_eq!(disk.cast(&slant, Interval::FORWARD).unwrap().t, 1.0);
+    assert!(disk.cast(&slant, Interval::new(0.0, 0.5).unwrap()).is_none());
+}
+
+#[test]
+fn constructors_reject_bad_input() {
+    let nan = f64::NAN;
+    assert_eq!(Sphere::new([0.0; 3], nan), Err(InputError::InvalidRadius { argument: "radius" }));
+    assert_eq!(Sphere::new([nan, 0.0, 0.0], 1.0), Err(InputError::NonFinite { argument: "center" }));
+    assert_eq!(Sphere::new([0.0; 3], f64::INFINITY), Err(InputError::NonFinite { argument: "radius" }));
+    assert_eq!(Cylinder::new([0.0; 3], [0.0; 3], 1.0), Err(InputError::Degenerate { argument: "axis" }));
+    assert_eq!(Cylinder::new([0.0; 3], [1.0, 0.0, 0.0], -1.0), Err(InputError::InvalidRadius { argument: "radius" }));
+    assert_eq!(CappedCylinder::new([f64::INFINITY, 0.0, 0.0], [1.0, 0.0, 0.0], 1.0), Err(InputError::NonFinite { argument: "base" }));
+    assert_eq!(Cone::new([0.0; 3], [0.0, 0.0, 1.0], 0.0), Err(InputError::Degenerate { argument: "radius" }));
+    assert_eq!(Cone::infinite([0.0; 3], [0.0, nan, 1.0], 1.0), Err(InputError::NonFinite { argument: "axis" }));
+    assert_eq!(Quadric::new([0.0; 10]), Err(InputError::Degenerate { argument: "coefficients" }));
+    let mut k = [1.0; 10];
+    k[9] = nan;
+    assert_eq!(Quadric::new(k), Err(InputError::NonFinite { argument: "coefficients" }));
+    assert_eq!(Plane::new([0.0; 3], [0.0; 3]), Err(InputError::Degenerate { argument: "normal" }));
+    assert_eq!(Disk::new([0.0; 3], [0.0, 0.0, 1.0], nan), Err(InputError::InvalidRadius { argument: "radius" }));
+}
