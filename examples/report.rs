@@ -46,6 +46,12 @@ mod orient2d;
 mod orient3d;
 #[path = "report/plane_side.rs"]
 mod plane_side;
+#[path = "report/ray_cone.rs"]
+mod ray_cone;
+#[path = "report/ray_cylinder.rs"]
+mod ray_cylinder;
+#[path = "report/ray_quadric.rs"]
+mod ray_quadric;
 #[path = "report/ray_sphere.rs"]
 mod ray_sphere;
 
@@ -65,6 +71,9 @@ const FAMILIES: &[(&str, Family)] = &[
     ("nearest", nearest::run),
     ("nearest_build", nearest_build::run),
     ("ray_sphere", |cfg| ray_sphere::family().run(cfg)),
+    ("ray_cylinder", |cfg| ray_cylinder::family().run(cfg)),
+    ("ray_cone", |cfg| ray_cone::family().run(cfg)),
+    ("ray_quadric", |cfg| ray_quadric::family().run(cfg)),
 ];
 
 fn main() -> std::io::Result<()> {

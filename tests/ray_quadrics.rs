@@ -62,7 +62,13 @@ fn sphere_case(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Result<(), Test
     )
 }
 
-fn cylinder_case(o: [f64; 3], d: [f64; 3], p: [f64; 3], a: [f64; 3], r: f64) -> Result<(), TestCaseError> {
+fn cylinder_case(
+    o: [f64; 3],
+    d: [f64; 3],
+    p: [f64; 3],
+    a: [f64; 3],
+    r: f64,
+) -> Result<(), TestCaseError> {
     prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
     let cyl = Cylinder::new(p, a, r).unwrap();
     let ray = Ray::new(o, d).unwrap();
@@ -251,24 +257,67 @@ fn capped_shapes_and_disks() {
     let disk = Disk::new([0.0; 3], [0.0, 1.0, 0.0], 2.0).unwrap();
     let slant = Ray::new([0.0, 1.0, 0.0], [1.0, -1.0, 0.0]).unwrap();
     assert_eq!(disk.cast(&slant, Interval::FORWARD).unwrap().t, 1.0);
-    assert!(disk.cast(&slant, Interval::new(0.0, 0.5).unwrap()).is_none());
+    assert!(
+        disk.cast(&slant, Interval::new(0.0, 0.5).unwrap())
+            .is_none()
+    );
 }
 
 #[test]
 fn constructors_reject_bad_input() {
     let nan = f64::NAN;
-    assert_eq!(Sphere::new([0.0; 3], nan), Err(InputError::InvalidRadius { argument: "radius" }));
-    assert_eq!(Sphere::new([nan, 0.0, 0.0], 1.0), Err(InputError::NonFinite { argument: "center" }));
-    assert_eq!(Sphere::new([0.0; 3], f64::INFINITY), Err(InputError::NonFinite { argument: "radius" }));
-    assert_eq!(Cylinder::new([0.0; 3], [0.0; 3], 1.0), Err(InputError::Degenerate { argument: "axis" }));
-    assert_eq!(Cylinder::new([0.0; 3], [1.0, 0.0, 0.0], -1.0), Err(InputError::InvalidRadius { argument: "radius" }));
-    assert_eq!(CappedCylinder::new([f64::INFINITY, 0.0, 0.0], [1.0, 0.0, 0.0], 1.0), Err(InputError::NonFinite { argument: "base" }));
-    assert_eq!(Cone::new([0.0; 3], [0.0, 0.0, 1.0], 0.0), Err(InputError::Degenerate { argument: "radius" }));
-    assert_eq!(Cone::infinite([0.0; 3], [0.0, nan, 1.0], 1.0), Err(InputError::NonFinite { argument: "axis" }));
-    assert_eq!(Quadric::new([0.0; 10]), Err(InputError::Degenerate { argument: "coefficients" }));
+    assert_eq!(
+        Sphere::new([0.0; 3], nan),
+        Err(InputError::InvalidRadius { argument: "radius" })
+    );
+    assert_eq!(
+        Sphere::new([nan, 0.0, 0.0], 1.0),
+        Err(InputError::NonFinite { argument: "center" })
+    );
+    assert_eq!(
+        Sphere::new([0.0; 3], f64::INFINITY),
+        Err(InputError::NonFinite { argument: "radius" })
+    );
+    assert_eq!(
+        Cylinder::new([0.0; 3], [0.0; 3], 1.0),
+        Err(InputError::Degenerate { argument: "axis" })
+    );
+    assert_eq!(
+        Cylinder::new([0.0; 3], [1.0, 0.0, 0.0], -1.0),
+        Err(InputError::InvalidRadius { argument: "radius" })
+    );
+    assert_eq!(
+        CappedCylinder::new([f64::INFINITY, 0.0, 0.0], [1.0, 0.0, 0.0], 1.0),
+        Err(InputError::NonFinite { argument: "base" })
+    );
+    assert_eq!(
+        Cone::new([0.0; 3], [0.0, 0.0, 1.0], 0.0),
+        Err(InputError::Degenerate { argument: "radius" })
+    );
+    assert_eq!(
+        Cone::infinite([0.0; 3], [0.0, nan, 1.0], 1.0),
+        Err(InputError::NonFinite { argument: "axis" })
+    );
+    assert_eq!(
+        Quadric::new([0.0; 10]),
+        Err(InputError::Degenerate {
+            argument: "coefficients"
+        })
+    );
     let mut k = [1.0; 10];
     k[9] = nan;
-    assert_eq!(Quadric::new(k), Err(InputError::NonFinite { argument: "coefficients" }));
-    assert_eq!(Plane::new([0.0; 3], [0.0; 3]), Err(InputError::Degenerate { argument: "normal" }));
-    assert_eq!(Disk::new([0.0; 3], [0.0, 0.0, 1.0], nan), Err(InputError::InvalidRadius { argument: "radius" }));
+    assert_eq!(
+        Quadric::new(k),
+        Err(InputError::NonFinite {
+            argument: "coefficients"
+        })
+    );
+    assert_eq!(
+        Plane::new([0.0; 3], [0.0; 3]),
+        Err(InputError::Degenerate { argument: "normal" })
+    );
+    assert_eq!(
+        Disk::new([0.0; 3], [0.0, 0.0, 1.0], nan),
+        Err(InputError::InvalidRadius { argument: "radius" })
+    );
 }

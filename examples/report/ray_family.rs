@@ -9,11 +9,14 @@ use crate::line_oracle::ulps_between;
 use exactray::hard_inputs::SplitMix64;
 use std::fmt::Write;
 
+/// Draws one case of an input class.
+pub type Generate<C> = fn(&mut SplitMix64) -> C;
+
 /// A ray-cast family: its input classes, exact answer and methods.
 pub struct RayFamily<C> {
     pub name: &'static str,
     /// Input classes: a name and a case generator.
-    pub inputs: Vec<(&'static str, fn(&mut SplitMix64) -> C)>,
+    pub inputs: Vec<(&'static str, Generate<C>)>,
     /// The exact first hit `t >= 0`, rounded correctly, or `None`.
     pub oracle: fn(&C) -> Option<f64>,
     pub methods: Vec<Box<dyn Measure<C, Option<f64>>>>,
@@ -55,12 +58,20 @@ impl<C> RayFamily<C> {
                     }
                 }
                 let max = ulps.iter().copied().fold(0.0, f64::max);
-                let med = if ulps.is_empty() { 0.0 } else { median(ulps.clone()) };
+                let med = if ulps.is_empty() {
+                    0.0
+                } else {
+                    median(ulps.clone())
+                };
                 let _ = writeln!(
                     table,
                     "| {inputs} | {} | {wrong} | {med} | {} |",
                     m.name(),
-                    if max >= 1e6 { format!("{max:.2e}") } else { format!("{max}") }
+                    if max >= 1e6 {
+                        format!("{max:.2e}")
+                    } else {
+                        format!("{max}")
+                    }
                 );
                 rows.push(Row {
                     family: self.name,
@@ -122,4 +133,24 @@ pub fn naive_first(a: f64, b: f64, c: f64) -> Option<f64> {
     } else {
         None
     }
+}
+
+/// parry3d's cast of a ray `o + t d` on `shape` placed at `at` (its usual
+/// call: the shape posed in the world, non-solid, no distance limit).
+#[inline(always)]
+pub fn parry_cast(
+    shape: &impl parry3d_f64::query::RayCast,
+    at: glam::DVec3,
+    o: glam::DVec3,
+    d: glam::DVec3,
+) -> Option<f64> {
+    use parry3d_f64::math::{Pose, Vector};
+    let v = |p: glam::DVec3| Vector::new(p.x, p.y, p.z);
+    let pose = Pose::from_translation(v(at));
+    shape.cast_ray(
+        &pose,
+        &parry3d_f64::query::Ray::new(v(o), v(d)),
+        f64::MAX,
+        false,
+    )
 }

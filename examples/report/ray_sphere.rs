@@ -5,14 +5,12 @@
 
 use crate::framework::method;
 use crate::line_oracle::Quadratic;
-use crate::ray_family::{RayFamily, cube, first_forward, naive_first, uniform, unit};
+use crate::ray_family::{RayFamily, cube, first_forward, naive_first, parry_cast, uniform, unit};
 use exactray::hard_inputs::SplitMix64;
 use exactray::query::ray::RayCast;
 use exactray::ray::{Interval, Ray};
 use exactray::shape::Sphere;
 use glam::DVec3;
-use parry3d_f64::math::{Pose, Vector};
-use parry3d_f64::query::RayCast as _;
 
 #[derive(Clone)]
 pub struct Case {
@@ -126,10 +124,7 @@ fn stable(c: &Case) -> Option<f64> {
 
 #[inline(always)]
 fn parry(c: &Case) -> Option<f64> {
-    let ball = parry3d_f64::shape::Ball::new(c.r);
-    let pose = Pose::from_translation(Vector::new(c.c.x, c.c.y, c.c.z));
-    let ray = parry3d_f64::query::Ray::new(Vector::new(c.o.x, c.o.y, c.o.z), Vector::new(c.d.x, c.d.y, c.d.z));
-    ball.cast_ray(&pose, &ray, f64::MAX, false)
+    parry_cast(&parry3d_f64::shape::Ball::new(c.r), c.c, c.o, c.d)
 }
 
 pub fn family() -> RayFamily<Case> {
@@ -143,7 +138,9 @@ pub fn family() -> RayFamily<Case> {
         ],
         oracle,
         methods: vec![
-            method("exactray", |c: &Case| c.sphere.cast(&c.ray, Interval::FORWARD).map(|h| h.t)),
+            method("exactray", |c: &Case| {
+                c.sphere.cast(&c.ray, Interval::FORWARD).map(|h| h.t)
+            }),
             method("naive", naive),
             method("naive-stable", stable),
             method("parry3d", parry),

@@ -79,7 +79,7 @@ impl<const N: usize> Wide<N> {
     /// The value times `2^lo`, correctly rounded to 53 significant bits:
     /// the top 64 bits of the magnitude with a sticky bit for the rest
     /// convert to `f64` with one correct rounding.
-    pub(crate) fn to_extended(&self, lo: i32) -> Extended {
+    pub(crate) fn as_extended(&self, lo: i32) -> Extended {
         let (mag, len, neg) = self.magnitude();
         if len == 0 {
             return Extended::ZERO;
@@ -87,7 +87,11 @@ impl<const N: usize> Wide<N> {
         let hi = mag[len - 1];
         let lz = hi.leading_zeros();
         let below = if len >= 2 { mag[len - 2] } else { 0 };
-        let mut top = if lz == 0 { hi } else { hi << lz | below >> (64 - lz) };
+        let mut top = if lz == 0 {
+            hi
+        } else {
+            hi << lz | below >> (64 - lz)
+        };
         let rest_nonzero = (lz > 0 && below << lz != 0)
             || (lz == 0 && below != 0)
             || mag[..len.saturating_sub(2)].iter().any(|&l| l != 0);
@@ -294,14 +298,17 @@ mod tests {
     #[test]
     fn conversion_rounds_correctly() {
         let w = Wide::<4>::from_i64_shifted(3, 200);
-        assert_eq!(w.to_extended(-200).to_f64(), 3.0);
+        assert_eq!(w.as_extended(-200).to_f64(), 3.0);
         // 2^53 + 1 rounds to even (2^53); 2^53 + 1 + 2^-100 rounds up.
         let tie = Wide::<4>::from_i64_shifted((1 << 53) + 1, 100);
-        assert_eq!(tie.to_extended(-100).to_f64(), 2f64.powi(53));
+        assert_eq!(tie.as_extended(-100).to_f64(), 2f64.powi(53));
         let above = tie.add(&Wide::<4>::from_i64(1));
-        assert_eq!(above.to_extended(-100).to_f64(), 2f64.powi(53) + 2.0);
-        assert_eq!(above.neg().to_extended(-100).to_f64(), -(2f64.powi(53) + 2.0));
-        assert!(Wide::<4>::ZERO.to_extended(5).is_zero());
+        assert_eq!(above.as_extended(-100).to_f64(), 2f64.powi(53) + 2.0);
+        assert_eq!(
+            above.neg().as_extended(-100).to_f64(),
+            -(2f64.powi(53) + 2.0)
+        );
+        assert!(Wide::<4>::ZERO.as_extended(5).is_zero());
     }
 
     #[test]

@@ -32,7 +32,11 @@ impl Cone {
     /// [`InputError::Degenerate`] for a zero axis or a zero radius (a
     /// half-angle of zero), [`InputError::InvalidRadius`] for a negative or
     /// NaN radius.
-    pub fn new(apex: impl IntoDVec3, axis: impl IntoDVec3, radius_: f64) -> Result<Cone, InputError> {
+    pub fn new(
+        apex: impl IntoDVec3,
+        axis: impl IntoDVec3,
+        radius_: f64,
+    ) -> Result<Cone, InputError> {
         let apex = finite("apex", apex)?;
         let axis = nonzero("axis", axis)?;
         let radius = radius("radius", radius_)?;

@@ -161,7 +161,9 @@ impl Quadratic {
         let (p, q) = (dot3(&w, &a), dot3(&d, &a));
         Quadratic {
             a: s.mul(&dot3(&v, &v)).sub(&rr.mul(&q).mul(&q)),
-            b: s.mul(&dot3(&u, &v)).sub(&rr.mul(&p).mul(&q)).mul(&Dyadic::int(2)),
+            b: s.mul(&dot3(&u, &v))
+                .sub(&rr.mul(&p).mul(&q))
+                .mul(&Dyadic::int(2)),
             c: s.mul(&dot3(&u, &u)).sub(&rr.mul(&p).mul(&p)),
         }
     }
@@ -201,9 +203,9 @@ impl Quadratic {
         ];
         let form = |u: &[Dyadic; 4], v: &[Dyadic; 4]| {
             let mut s = Dyadic::int(0);
-            for i in 0..4 {
-                for j in 0..4 {
-                    s = s.add(&u[i].mul(&m(i, j)).mul(&v[j]));
+            for (i, ui) in u.iter().enumerate() {
+                for (j, vj) in v.iter().enumerate() {
+                    s = s.add(&ui.mul(&m(i, j)).mul(vj));
                 }
             }
             s
@@ -255,7 +257,9 @@ impl Quadratic {
     pub fn answer(&self) -> LineAnswer {
         let count = self.count();
         let roots = match count {
-            Some(1) if self.a.sign() == 0 => vec![self.round_root(self.b.sign(), i64::MIN + 1, i64::MAX)],
+            Some(1) if self.a.sign() == 0 => {
+                vec![self.round_root(self.b.sign(), i64::MIN + 1, i64::MAX)]
+            }
             Some(1) => vec![self.round_vertex()],
             Some(2) => {
                 // Left of the vertex the polynomial runs against sign(a).
@@ -276,7 +280,11 @@ impl Quadratic {
     fn round_vertex(&self) -> f64 {
         // The slope is monotone increasing in t for a > 0 (decreasing else).
         let s = self.a.sign();
-        self.bisect(|t| s * self.slope_sign_at(t), ordered(-f64::MAX), ordered(f64::MAX))
+        self.bisect(
+            |t| s * self.slope_sign_at(t),
+            ordered(-f64::MAX),
+            ordered(f64::MAX),
+        )
     }
 
     /// The root on a branch where `sign(p(t)) * dir` increases with `t`,

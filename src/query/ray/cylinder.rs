@@ -1,7 +1,10 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::quadratic::{U, circle_coeffs, cross_magnitudes, exact_roots, filtered_roots, in_filter_range, norm1};
+use super::quadratic::{
+    SMALL_SPAN, U, certified_roots, circle_coeffs, cross_magnitudes, eval_circle, exact_roots,
+    in_filter_range, norm1,
+};
 use super::{Hit, RayCast, first_in, unit_or};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -22,8 +25,8 @@ impl Cylinder {
     /// over the whole line, sorted. The count is exact: tangent lines give
     /// [`Roots::One`]; a line parallel to the axis gives [`Roots::None`]
     /// (off the surface) or [`Roots::All`] (on it), decided exactly. Roots
-    /// are within 16 ulps of the exact roots (5 where the exact stage runs),
-    /// as for [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
+    /// carry the accuracy of
+    /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
     ///
     /// ```
     /// use exactray::shape::Cylinder;
@@ -39,7 +42,7 @@ impl Cylinder {
     pub fn line_roots(&self, ray: &Ray) -> Roots {
         let (o, d, ax) = (ray.origin(), ray.direction(), self.axis);
         let w = o - self.point;
-                // Project across the axis: |u + t v|^2 = R^2 with u = w x a,
+        // Project across the axis: |u + t v|^2 = R^2 with u = w x a,
         // v = d x a, R^2 = r^2 |a|^2, a sphere-like problem in the plane
         // normal to the axis (scaled by |a|).
         let (u, v) = (w.cross(ax), d.cross(ax));
@@ -53,8 +56,10 @@ impl Cylinder {
             // product (1).
             let eu = cross_magnitudes(w, ax) * (3.0 * U);
             let ev = cross_magnitudes(d, ax) * (2.0 * U);
-            let k = circle_coeffs(u, eu, v, ev, rr, 5.0 * U * rr);
-            if let Some(roots) = filtered_roots(&k) {
+            let err = 5.0 * U * rr;
+            let k = circle_coeffs(u, eu, v, ev, rr, err);
+            let eval = |t| eval_circle(u, eu, v, ev, rr, err, t);
+            if let Some(roots) = certified_roots(&k, eval) {
                 return roots;
             }
         }
@@ -73,39 +78,62 @@ impl Cylinder {
 /// The exact stage, at three grains (`o, p, r`: `lo`; `d`: `ld`; `a`:
 /// `la`), under which the equation keeps its roots: `A = |v|^2` at
 /// `2 ld + 2 la`, `B = u . v` at `lo + ld + 2 la`, `C = |u|^2 - r^2 |a|^2`
-/// at `2 lo + 2 la`.
+/// at `2 lo + 2 la`. Small integers for ordinary spans, as for the sphere.
 fn exact(o: DVec3, d: DVec3, p: DVec3, ax: DVec3, r: f64) -> Roots {
     let g = Grain::of(&[o.x, o.y, o.z, p.x, p.y, p.z, r]);
+    let (gd, ga) = (Grain::of(&d.to_array()), Grain::of(&ax.to_array()));
     let lo = if g.all_zero() { 0 } else { g.lo_min };
-    let ld = Grain::of(&d.to_array()).lo_min;
-    let la = Grain::of(&ax.to_array()).lo_min;
-    let w: [Wide<W1>; 3] =
+    let grains = (lo, gd.lo_min, ga.lo_min);
+    if g.span().max(gd.span()).max(ga.span()) <= SMALL_SPAN {
+        exact_in::<2, 5, 9, 18>(o, d, p, ax, r, grains)
+    } else {
+        exact_in::<W1, W2, W4, W8>(o, d, p, ax, r, grains)
+    }
+}
+
+fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
+    o: DVec3,
+    d: DVec3,
+    p: DVec3,
+    ax: DVec3,
+    r: f64,
+    (lo, ld, la): (i32, i32, i32),
+) -> Roots {
+    let w: [Wide<N1>; 3] =
         core::array::from_fn(|k| Wide::from_f64(o[k], lo).sub(&Wide::from_f64(p[k], lo)));
-    let dw: [Wide<W1>; 3] = core::array::from_fn(|k| Wide::from_f64(d[k], ld));
-    let aw: [Wide<W1>; 3] = core::array::from_fn(|k| Wide::from_f64(ax[k], la));
-    let u = cross(&w, &aw);
-    let v = cross(&dw, &aw);
-    let (mut a, mut b, mut c, mut aa) = (Wide::<W4>::ZERO, Wide::<W4>::ZERO, Wide::<W4>::ZERO, Wide::<W2>::ZERO);
+    let dw: [Wide<N1>; 3] = core::array::from_fn(|k| Wide::from_f64(d[k], ld));
+    let aw: [Wide<N1>; 3] = core::array::from_fn(|k| Wide::from_f64(ax[k], la));
+    let u: [Wide<N2>; 3] = cross(&w, &aw);
+    let v: [Wide<N2>; 3] = cross(&dw, &aw);
+    let (mut a, mut b, mut c, mut aa) = (
+        Wide::<N4>::ZERO,
+        Wide::<N4>::ZERO,
+        Wide::<N4>::ZERO,
+        Wide::<N2>::ZERO,
+    );
     for k in 0..3 {
         a = a.add(&Wide::mul(&v[k], &v[k]));
         b = b.add(&Wide::mul(&u[k], &v[k]));
         c = c.add(&Wide::mul(&u[k], &u[k]));
         aa = aa.add(&Wide::mul(&aw[k], &aw[k]));
     }
-    let rw = Wide::<W1>::from_f64(r, lo);
-    let r2 = Wide::<W2>::mul(&rw, &rw);
+    let rw = Wide::<N1>::from_f64(r, lo);
+    let r2 = Wide::<N2>::mul(&rw, &rw);
     c = c.sub(&Wide::mul(&r2, &aa));
-    exact_roots::<W4, W8>((&a, 2 * (ld + la)), (&b, lo + ld + 2 * la), (&c, 2 * (lo + la)))
+    exact_roots::<N4, N8>(
+        (&a, 2 * (ld + la)),
+        (&b, lo + ld + 2 * la),
+        (&c, 2 * (lo + la)),
+    )
 }
 
 /// `x x y`, exactly.
-fn cross(x: &[Wide<W1>; 3], y: &[Wide<W1>; 3]) -> [Wide<W2>; 3] {
+fn cross<const N1: usize, const N2: usize>(x: &[Wide<N1>; 3], y: &[Wide<N1>; 3]) -> [Wide<N2>; 3] {
     core::array::from_fn(|k| {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        Wide::<W2>::mul(&x[i], &y[j]).sub(&Wide::mul(&x[j], &y[i]))
+        Wide::<N2>::mul(&x[i], &y[j]).sub(&Wide::mul(&x[j], &y[i]))
     })
 }
-
 impl RayCast for Cylinder {
     /// The first hit in `range`; the normal points away from the axis. A
     /// line lying on the surface hits at the point of `range` nearest

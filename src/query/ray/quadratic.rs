@@ -5,9 +5,10 @@
 //!   their absolute errors (Wilkinson's running error analysis; N. Higham,
 //!   *Accuracy and Stability of Numerical Algorithms*, 2nd ed., ch. 3).
 //!   It answers when the bound certifies the sign of the discriminant (so
-//!   the root count is exact) and bounds each root's relative error by
-//!   [`FAST_ROOT_ULPS`] units of roundoff (so each root is within that many
-//!   ulps of the exact root);
+//!   the root count is exact) and each computed root is certified, a
+//!   posteriori, to have an exact root within 3 ulps: the exact polynomial,
+//!   evaluated with a rigorous error bound, changes sign across it (so each
+//!   root is within 4 ulps of the correctly rounded root);
 //! - **exact**: the coefficients as exact integers (`wide.rs`), the
 //!   discriminant's sign exact, each coefficient rounded once to 53 bits
 //!   with an unbounded exponent ([`Extended`]) and the roots from the
@@ -20,6 +21,7 @@
 
 use crate::extended::Extended;
 use crate::float::sqrt;
+use crate::hard_inputs::step_ulps;
 use crate::predicates::wide::Wide;
 use crate::roots::Roots;
 use crate::sign::Sign;
@@ -28,35 +30,46 @@ use glam::DVec3;
 /// The unit roundoff `2^-53`.
 pub(crate) const U: f64 = f64::EPSILON / 2.0;
 
-/// The largest first-order relative error bound, in units of `U`, that the
-/// filtered stage accepts for a root; above it the exact stage runs. One
-/// unit of `U` is at most one ulp, so an accepted root is within this many
-/// ulps of the exact root.
-pub(crate) const FAST_ROOT_ULPS: f64 = 16.0;
+/// The largest grain span (bits from a set's finest to its coarsest bit)
+/// for which the exact stages use 2-limb inputs: a difference of two such
+/// values needs at most 128 bits with its sign.
+pub(crate) const SMALL_SPAN: i32 = 126;
 
-/// Half-form coefficients with absolute error bounds (`e_*`), and the
-/// discriminant `disc ≈ B^2 - A C` with its own bound.
+/// Half-form coefficients, the bound `e_a` on `A`'s absolute error, and
+/// the discriminant `disc ≈ B^2 - A C` with its bound `e_disc`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Coeffs {
     pub a: f64,
     pub e_a: f64,
     pub b: f64,
-    pub e_b: f64,
     pub c: f64,
-    pub e_c: f64,
     pub disc: f64,
     pub e_disc: f64,
 }
 
-/// The roots when the running bounds certify the count and the accuracy;
-/// `None` asks for the exact stage. Non-finite bounds (overflow) decline.
-#[inline]
-pub(crate) fn filtered_roots(k: &Coeffs) -> Option<Roots> {
-    // Every bound below is first order; the factor covers the neglected
-    // O(u^2) terms with room to spare.
-    let slack = 1.0 + 64.0 * U;
-    let e_disc = k.e_disc * slack;
-    if !(e_disc < f64::INFINITY) || k.a <= k.e_a * slack {
+/// How far, in ulps, a certified root may lie from the exact root: with
+/// the correctly rounded root half an ulp further at most, every certified
+/// root is within 4 ulps of it (3.5, rounded to whole ulps).
+pub(crate) const CERTIFIED_ULPS: i64 = 3;
+
+/// The roots when the running bound on the discriminant certifies the
+/// count and each computed root is certified within [`CERTIFIED_ULPS`] of
+/// an exact root; `None` asks for the exact stage.
+///
+/// A root `t` is certified when the exact polynomial, evaluated with a
+/// rigorous error bound by `eval` (which returns the value and the bound),
+/// has opposite signs `CERTIFIED_ULPS` ulps below and above `t`: an exact
+/// root lies between. The two brackets are disjoint and the count is two,
+/// so each holds exactly one root. This a-posteriori check is what makes
+/// the fast path both fast and tight: an a-priori bound on the stable
+/// formula costs several units of roundoff for every rounding it passes
+/// through, while the actual errors are about one.
+#[inline(always)]
+pub(crate) fn certified_roots(k: &Coeffs, eval: impl Fn(f64) -> (f64, f64)) -> Option<Roots> {
+    // The bounds are first order; the factor covers the O(u^2) terms.
+    let e_disc = k.e_disc * (1.0 + 64.0 * U);
+    // A NaN or infinite bound (overflow) fails the first test.
+    if e_disc.is_nan() || e_disc == f64::INFINITY || k.a <= k.e_a * (1.0 + 64.0 * U) {
         return None;
     }
     if k.disc < -e_disc {
@@ -66,23 +79,43 @@ pub(crate) fn filtered_roots(k: &Coeffs) -> Option<Roots> {
         return None;
     }
     let s = sqrt(k.disc);
-    // sqrt halves the relative error of its argument and rounds once.
-    let e_s = s * (0.5 * e_disc / k.disc + U);
     let q = -(k.b + s.copysign(k.b));
-    // Same signs: the sum rounds once and adds the two errors.
-    let rel_q = (k.e_b + e_s) / q.abs() + U;
-    let rel_1 = rel_q + k.e_a / k.a + U;
-    let rel_2 = rel_q + k.e_c / k.c.abs() + U;
-    let limit = FAST_ROOT_ULPS * U / slack;
-    if !(rel_1 <= limit && rel_2 <= limit) {
-        return None;
-    }
     let (t1, t2) = (q / k.a, k.c / q);
-    Some(if t1 <= t2 {
-        Roots::Two(t1, t2)
-    } else {
-        Roots::Two(t2, t1)
-    })
+    let (t1, t2) = if t1 <= t2 { (t1, t2) } else { (t2, t1) };
+    let apart = step_ulps(t1, 2 * CERTIFIED_ULPS) < t2;
+    (apart && brackets_root(t1, &eval) && brackets_root(t2, &eval)).then_some(Roots::Two(t1, t2))
+}
+
+/// Whether the polynomial certainly changes sign across
+/// `[t - CERTIFIED_ULPS ulps, t + CERTIFIED_ULPS ulps]`.
+#[inline(always)]
+fn brackets_root(t: f64, eval: &impl Fn(f64) -> (f64, f64)) -> bool {
+    let (p0, e0) = eval(step_ulps(t, -CERTIFIED_ULPS));
+    let (p1, e1) = eval(step_ulps(t, CERTIFIED_ULPS));
+    let slack = 1.0 + 64.0 * U;
+    p0.abs() > e0 * slack && p1.abs() > e1 * slack && (p0 < 0.0) != (p1 < 0.0)
+}
+
+/// `|x|^2 - rr` at `x = w + t d` with a rigorous first-order error bound,
+/// given componentwise bounds `ew`, `ed` on the errors of `w` and `d` and
+/// `err` on that of `rr`: the polynomial of the sphere-like problems.
+#[inline(always)]
+pub(crate) fn eval_circle(
+    w: DVec3,
+    ew: DVec3,
+    d: DVec3,
+    ed: DVec3,
+    rr: f64,
+    err: f64,
+    t: f64,
+) -> (f64, f64) {
+    let td = d * t;
+    let x = w + td;
+    // The product and the sum round once each; the inputs' errors carry.
+    let ex = ew + ed * t.abs() + (td.abs() + x.abs()) * U;
+    let xx = x.dot(x);
+    let p = xx - rr;
+    (p, 2.0 * x.abs().dot(ex) + 3.0 * U * xx + err + U * p.abs())
 }
 
 /// The roots of `A t^2 + 2 B t + C` from exact integer coefficients:
@@ -95,7 +128,7 @@ pub(crate) fn exact_roots<const N: usize, const M: usize>(
     (c, ec): (&Wide<N>, i32),
 ) -> Roots {
     debug_assert_eq!(2 * eb, ea + ec);
-    let (xa, xb, xc) = (a.to_extended(ea), b.to_extended(eb), c.to_extended(ec));
+    let (xa, xb, xc) = (a.as_extended(ea), b.as_extended(eb), c.as_extended(ec));
     if xa.is_zero() {
         // Linear: 2 B t + C = 0.
         return if !xb.is_zero() {
@@ -111,7 +144,7 @@ pub(crate) fn exact_roots<const N: usize, const M: usize>(
         Sign::Negative => Roots::None,
         Sign::Zero => Roots::One(xb.neg().div(xa).to_f64()),
         Sign::Positive => {
-            let s = disc.to_extended(2 * eb).sqrt();
+            let s = disc.as_extended(2 * eb).sqrt();
             let q = if xb.is_negative() {
                 s.add(xb.neg())
             } else {
@@ -138,7 +171,8 @@ pub(crate) fn norm1(v: DVec3) -> f64 {
 /// across the axis) share, from inputs known to within `|δw_i| <= ew_i`,
 /// `|δd_i| <= ed_i` (componentwise) and `|δrr| <= err`:
 ///
-/// `A = |d|^2`, `B = w . d`, `C = |w|^2 - rr`, and the discriminant in
+/// `A = |d|^2` with its error bound, `B = w . d`, `C = |w|^2 - rr` (their
+/// accuracy is checked on the roots, see [`certified_roots`]), and the discriminant in
 /// Lagrange's form `rr |d|^2 - |w x d|^2`, which does not cancel for far
 /// origins the way `B^2 - A C` does.
 ///
@@ -149,18 +183,16 @@ pub(crate) fn norm1(v: DVec3) -> f64 {
 /// products: two roundings relative to the two products' magnitudes.
 #[inline(always)]
 pub(crate) fn circle_coeffs(w: DVec3, ew: DVec3, d: DVec3, ed: DVec3, rr: f64, err: f64) -> Coeffs {
-    let (aw, ad) = (w.abs(), d.abs());
+    let ad = d.abs();
     let a = d.dot(d);
     let e_a = 2.0 * ad.dot(ed) + 3.0 * U * a;
     let b = w.dot(d);
-    let e_b = aw.dot(ed) + ad.dot(ew) + 3.0 * U * aw.dot(ad);
-    let ww = w.dot(w);
-    let c = ww - rr;
-    let e_c = 2.0 * aw.dot(ew) + 3.0 * U * ww + err + U * c.abs();
+    let c = w.dot(w) - rr;
     let cr = w.cross(d);
     // Input errors propagate into each component as |w_j| ed_k + |d_k|
     // ew_j + |w_k| ed_j + |d_j| ew_k.
-    let e_cr = cross_magnitudes(w, ed) + cross_magnitudes(ew, d) + cross_magnitudes(w, d) * (2.0 * U);
+    let e_cr =
+        cross_magnitudes(w, ed) + cross_magnitudes(ew, d) + cross_magnitudes(w, d) * (2.0 * U);
     let x = cr.dot(cr);
     let e_x = 2.0 * cr.abs().dot(e_cr) + 3.0 * U * x;
     let disc = crate::float::fma(rr, a, -x);
@@ -169,9 +201,7 @@ pub(crate) fn circle_coeffs(w: DVec3, ew: DVec3, d: DVec3, ed: DVec3, rr: f64, e
         a,
         e_a,
         b,
-        e_b,
         c,
-        e_c,
         disc,
         e_disc,
     }
@@ -182,7 +212,11 @@ pub(crate) fn circle_coeffs(w: DVec3, ew: DVec3, d: DVec3, ed: DVec3, rr: f64, e
 #[inline(always)]
 pub(crate) fn cross_magnitudes(x: DVec3, y: DVec3) -> DVec3 {
     let (x, y) = (x.abs(), y.abs());
-    DVec3::new(x.y * y.z + x.z * y.y, x.z * y.x + x.x * y.z, x.x * y.y + x.y * y.x)
+    DVec3::new(
+        x.y * y.z + x.z * y.y,
+        x.z * y.x + x.x * y.z,
+        x.x * y.y + x.y * y.x,
+    )
 }
 
 /// Whether `v` lies where the filtered stage's bounds hold: products of the

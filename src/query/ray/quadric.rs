@@ -1,6 +1,6 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
-use super::quadratic::{Coeffs, U, exact_roots, filtered_roots, in_filter_range};
+use super::quadratic::{Coeffs, SMALL_SPAN, U, certified_roots, exact_roots, in_filter_range};
 use super::{Hit, RayCast, first_in, unit_or};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -81,44 +81,83 @@ fn filtered(k: &[f64; 10], o: DVec3, d: DVec3) -> Option<Roots> {
     // B^2 rounds once inside the fma's addend, the fma once; the inputs'
     // errors propagate through the products.
     let e_disc = 2.0 * b.abs() * e_b + a.abs() * e_c + c.abs() * e_a + U * b * b + U * disc.abs();
-    filtered_roots(&Coeffs {
+    let k2 = Coeffs {
         a,
         e_a,
         b,
-        e_b,
         c,
-        e_c,
         disc,
         e_disc,
-    })
-    // The filter needs A well away from zero; a leading coefficient that
-    // is (nearly) zero goes to the exact stage, which handles degree 1 and 0.
+    };
+    // A leading coefficient that is (nearly) zero declines here and goes to
+    // the exact stage, which handles degrees 1 and 0.
+    certified_roots(&k2, |t| eval(&m, o, d, t))
+}
+
+/// `x^T 2Q x` at `x = (o + t d, 1)`, with a rigorous first-order error
+/// bound: each coordinate of `o + t d` rounds twice (product and sum), and
+/// an error `δx_i` changes the form by at most `2 |(2Q |x|)_i| δx_i`; the
+/// form's own 16 products and sums round within `18 u` of the sum of its
+/// terms' magnitudes, as in [`filtered`].
+#[inline(always)]
+fn eval(m: &[[f64; 4]; 4], o: DVec3, d: DVec3, t: f64) -> (f64, f64) {
+    let td = d * t;
+    let x = o + td;
+    let ex = (td.abs() + x.abs()) * U;
+    let xh = [x.x, x.y, x.z, 1.0];
+    let (p, mag) = bilinear(m, xh, xh);
+    let mut prop = 0.0;
+    for i in 0..3 {
+        let g: f64 = (0..4).map(|j| (m[i][j] * xh[j]).abs()).sum();
+        prop += 2.0 * g * ex[i];
+    }
+    (p, prop + 18.0 * U * mag)
 }
 
 /// The exact stage: the coefficients and `o` at one grain `lo <= 0` (so
 /// the homogeneous `1` is an integer too), `d` at its own `ld`: `A` at
-/// `lo + 2 ld`, `B` at `2 lo + ld`, `C` at `3 lo`.
+/// `lo + 2 ld`, `B` at `2 lo + ld`, `C` at `3 lo`. Small integers when the
+/// spans allow (the doubled entries need one bit more).
 fn exact(k: &[f64; 10], o: DVec3, d: DVec3) -> Roots {
-    let mut values = [0.0; 13];
+    let mut values = [0.0; 14];
     values[..10].copy_from_slice(k);
-    values[10..].copy_from_slice(&o.to_array());
-    let lo = Grain::of(&values).lo_min.min(0);
-    let ld = Grain::of(&d.to_array()).lo_min;
+    values[10..13].copy_from_slice(&o.to_array());
+    values[13] = 1.0;
+    let g = Grain::of(&values);
+    let gd = Grain::of(&d.to_array());
+    let lo = g.lo_min.min(0);
+    if g.span().max(gd.span()) < SMALL_SPAN {
+        exact_in::<2, 5, 7, 14>(k, o, d, lo, gd.lo_min)
+    } else {
+        exact_in::<W1, W2, W3, W6>(k, o, d, lo, gd.lo_min)
+    }
+}
+
+fn exact_in<const N1: usize, const N2: usize, const N3: usize, const N6: usize>(
+    k: &[f64; 10],
+    o: DVec3,
+    d: DVec3,
+    lo: i32,
+    ld: i32,
+) -> Roots {
     let m = doubled_matrix(k);
-    let mw: [[Wide<W1>; 4]; 4] = core::array::from_fn(|i| core::array::from_fn(|j| Wide::from_f64(m[i][j], lo)));
-    let x: [Wide<W1>; 4] = core::array::from_fn(|i| Wide::from_f64([o.x, o.y, o.z, 1.0][i], lo));
-    let y: [Wide<W1>; 4] = core::array::from_fn(|i| Wide::from_f64([d.x, d.y, d.z, 0.0][i], ld));
-    let times = |v: &[Wide<W1>; 4]| -> [Wide<W2>; 4] {
-        core::array::from_fn(|i| (0..4).fold(Wide::ZERO, |s, j| s.add(&Wide::mul(&mw[i][j], &v[j]))))
+    let mw: [[Wide<N1>; 4]; 4] =
+        core::array::from_fn(|i| core::array::from_fn(|j| Wide::from_f64(m[i][j], lo)));
+    let x: [Wide<N1>; 4] = core::array::from_fn(|i| Wide::from_f64([o.x, o.y, o.z, 1.0][i], lo));
+    let y: [Wide<N1>; 4] = core::array::from_fn(|i| Wide::from_f64([d.x, d.y, d.z, 0.0][i], ld));
+    let times = |v: &[Wide<N1>; 4]| -> [Wide<N2>; 4] {
+        core::array::from_fn(|i| {
+            (0..4).fold(Wide::ZERO, |s, j| s.add(&Wide::mul(&mw[i][j], &v[j])))
+        })
     };
-    let dot = |u: &[Wide<W1>; 4], v: &[Wide<W2>; 4]| -> Wide<W3> {
+    let dot = |u: &[Wide<N1>; 4], v: &[Wide<N2>; 4]| -> Wide<N3> {
         (0..4).fold(Wide::ZERO, |s, i| s.add(&Wide::mul(&u[i], &v[i])))
     };
     let (my, mx) = (times(&y), times(&x));
     let a = dot(&y, &my);
     let b = dot(&x, &my);
     let c = dot(&x, &mx);
-    exact_roots::<W3, W6>((&a, lo + 2 * ld), (&b, 2 * lo + ld), (&c, 3 * lo))
+    exact_roots::<N3, N6>((&a, lo + 2 * ld), (&b, 2 * lo + ld), (&c, 3 * lo))
 }
 
 impl RayCast for Quadric {

@@ -1,6 +1,8 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::quadratic::{U, circle_coeffs, exact_roots, filtered_roots, in_filter_range, norm1};
+use super::quadratic::{
+    SMALL_SPAN, U, certified_roots, circle_coeffs, eval_circle, exact_roots, in_filter_range, norm1,
+};
 use super::{Hit, RayCast, first_in, unit_or};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -19,10 +21,11 @@ impl Sphere {
     /// Every real root of `|o + t d - center|^2 = radius^2` over the whole
     /// line (any sign of `t`), sorted. The count is exact: [`Roots::One`]
     /// exactly when the line is tangent, decided on the exact inputs. Each
-    /// root is within 16 ulps of the exact root (the filtered stage's
-    /// certified bound; within 5 ulps when the exact stage runs, which it
-    /// does for grazing rays, far origins, origins near the surface and
-    /// tiny or huge magnitudes; the report measures the actual error).
+    /// root is within 4 ulps of the correctly rounded root where the fast
+    /// stage certifies it (almost every ordinary ray), and within 5 ulps of
+    /// the exact root (first-order bound) where the exact stage runs: for
+    /// tangent and grazing rays, some far origins, and tiny or huge
+    /// magnitudes. The report measures the actual error.
     ///
     /// ```
     /// use exactray::shape::Sphere;
@@ -44,8 +47,10 @@ impl Sphere {
         if in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(rr * a) {
             // w = o - c rounds once per coordinate: |δw_i| <= u |w_i|; r^2
             // rounds once.
-            let k = circle_coeffs(w, w.abs() * U, d, DVec3::ZERO, rr, U * rr);
-            if let Some(roots) = filtered_roots(&k) {
+            let (ew, err) = (w.abs() * U, U * rr);
+            let k = circle_coeffs(w, ew, d, DVec3::ZERO, rr, err);
+            let eval = |t| eval_circle(w, ew, d, DVec3::ZERO, rr, err, t);
+            if let Some(roots) = certified_roots(&k, eval) {
                 return roots;
             }
         }
@@ -56,22 +61,39 @@ impl Sphere {
 /// The exact stage: `o, c, r` at their common grain `lo` and `d` at its own
 /// (the roots do not change when `d` is scaled, and `t` scales by the ratio
 /// of the two grains), so `A = |d|^2` at `2 ld`, `B = (o - c) . d` at
-/// `lo + ld`, `C = |o - c|^2 - r^2` at `2 lo`.
+/// `lo + ld`, `C = |o - c|^2 - r^2` at `2 lo`. Integers of 2, 5 and 9 limbs
+/// suffice when every value spans at most 126 bits at its grain (ordinary
+/// inputs); otherwise the widths that hold any finite input.
 fn exact(o: DVec3, d: DVec3, c: DVec3, r: f64) -> Roots {
     let g = Grain::of(&[o.x, o.y, o.z, c.x, c.y, c.z, r]);
+    let gd = Grain::of(&d.to_array());
     let lo = if g.all_zero() { 0 } else { g.lo_min };
-    let ld = Grain::of(&d.to_array()).lo_min;
-    let (mut a, mut b, mut cc) = (Wide::<W2>::ZERO, Wide::<W2>::ZERO, Wide::<W2>::ZERO);
+    if g.span().max(gd.span()) <= SMALL_SPAN {
+        exact_in::<2, 5, 9>(o, d, c, r, lo, gd.lo_min)
+    } else {
+        exact_in::<W1, W2, W4>(o, d, c, r, lo, gd.lo_min)
+    }
+}
+
+fn exact_in<const N1: usize, const N2: usize, const N4: usize>(
+    o: DVec3,
+    d: DVec3,
+    c: DVec3,
+    r: f64,
+    lo: i32,
+    ld: i32,
+) -> Roots {
+    let (mut a, mut b, mut cc) = (Wide::<N2>::ZERO, Wide::<N2>::ZERO, Wide::<N2>::ZERO);
     for k in 0..3 {
-        let w = Wide::<W1>::from_f64(o[k], lo).sub(&Wide::<W1>::from_f64(c[k], lo));
-        let dk = Wide::<W1>::from_f64(d[k], ld);
+        let w = Wide::<N1>::from_f64(o[k], lo).sub(&Wide::<N1>::from_f64(c[k], lo));
+        let dk = Wide::<N1>::from_f64(d[k], ld);
         a = a.add(&Wide::mul(&dk, &dk));
         b = b.add(&Wide::mul(&w, &dk));
         cc = cc.add(&Wide::mul(&w, &w));
     }
-    let rw = Wide::<W1>::from_f64(r, lo);
+    let rw = Wide::<N1>::from_f64(r, lo);
     cc = cc.sub(&Wide::mul(&rw, &rw));
-    exact_roots::<W2, W4>((&a, 2 * ld), (&b, lo + ld), (&cc, 2 * lo))
+    exact_roots::<N2, N4>((&a, 2 * ld), (&b, lo + ld), (&cc, 2 * lo))
 }
 
 impl RayCast for Sphere {
