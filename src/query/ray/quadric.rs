@@ -140,9 +140,16 @@ fn exact_in<const N1: usize, const N2: usize, const N3: usize, const N6: usize>(
     lo: i32,
     ld: i32,
 ) -> Roots {
-    let m = doubled_matrix(k);
-    let mw: [[Wide<N1>; 4]; 4] =
-        core::array::from_fn(|i| core::array::from_fn(|j| Wide::from_f64(m[i][j], lo)));
+    // 2Q from the coefficients, doubled in integers: doubling in f64 would
+    // overflow for coefficients near f64::MAX.
+    let [a, b, c, d2, e, f, g, h, i, j] = k.map(|v| Wide::<N1>::from_f64(v, lo));
+    let two = |v: &Wide<N1>| v.add(v);
+    let mw: [[Wide<N1>; 4]; 4] = [
+        [two(&a), d2, e, g],
+        [d2, two(&b), f, h],
+        [e, f, two(&c), i],
+        [g, h, i, two(&j)],
+    ];
     let x: [Wide<N1>; 4] = core::array::from_fn(|i| Wide::from_f64([o.x, o.y, o.z, 1.0][i], lo));
     let y: [Wide<N1>; 4] = core::array::from_fn(|i| Wide::from_f64([d.x, d.y, d.z, 0.0][i], ld));
     let times = |v: &[Wide<N1>; 4]| -> [Wide<N2>; 4] {
