@@ -18,4 +18,4 @@ mkdir -p "$here/build"
 # generator prints are the same on every machine (the fixtures never depend
 # on them).
 g++ -std=c++17 -O2 -frounding-math -ffp-contract=off -Wall -Wextra \
-    -o "$here/build/generate" "$here/generate.cpp" -lmpfr -lgmp
+    -o "$here/build/generate" "$here/generate.cpp" -lmpfr -lgmpxx -lgmp

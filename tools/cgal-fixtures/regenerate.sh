@@ -1,8 +1,9 @@
 #!/bin/sh
 # Rebuilds the generator and rewrites the fixtures it owns in tests/fixtures/:
-# orient2d.txt, orient3d.txt, plane_side.txt and one nearest-<set>.txt per
-# point set (other files there are left alone). The output is deterministic:
-# rerunning gives byte-identical files.
+# orient2d.txt, orient3d.txt, plane_side.txt, one nearest-<set>.txt per
+# point set, and ray_sphere.txt, ray_cylinder.txt, ray_quadric.txt,
+# ray_triangle.txt (other files there are left alone). The output is
+# deterministic: rerunning gives byte-identical files.
 #
 #   tools/cgal-fixtures/regenerate.sh          rewrite tests/fixtures/
 #   tools/cgal-fixtures/regenerate.sh --check  fail if tests/fixtures/ is stale
@@ -29,8 +30,9 @@ if [ "${1:-}" = "--check" ]; then
             status=1
         fi
     done
-    # A nearest set the generator no longer writes (renamed or removed).
-    for f in "$dest"/nearest-*.txt; do
+    # A nearest set or ray file the generator no longer writes (renamed or
+    # removed).
+    for f in "$dest"/nearest-*.txt "$dest"/ray_*.txt; do
         [ -f "$f" ] || continue
         if [ ! -f "$tmp/$(basename "$f")" ]; then
             echo "not generated (remove it?): tests/fixtures/$(basename "$f")" >&2
@@ -46,7 +48,7 @@ for f in "$tmp"/*.txt; do
     cp "$f" "$dest/$(basename "$f")"
 done
 echo "wrote $(ls "$tmp" | wc -l) files to $dest" >&2
-for f in "$dest"/nearest-*.txt; do
+for f in "$dest"/nearest-*.txt "$dest"/ray_*.txt; do
     [ -f "$f" ] || continue
     [ -f "$tmp/$(basename "$f")" ] || echo "warning: tests/fixtures/$(basename "$f") is not generated any more" >&2
 done
