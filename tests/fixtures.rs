@@ -15,9 +15,13 @@
 
 mod common;
 
+use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use common::oracle;
 use exactray::SphereBvh;
 use exactray::bvh::Nearest;
+use exactray::ray::Ray;
+use exactray::roots::Roots;
+use exactray::shape::{Cylinder, Quadric, Sphere};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -90,20 +94,20 @@ const KINDS: &[Kind] = &[
     Kind {
         name: "ray_sphere",
         min_fields: 11,
-        predicate: None,
-        oracle: None,
+        predicate: Some(PerLine(crate_ray_sphere)),
+        oracle: Some(PerLine(oracle_ray_sphere)),
     },
     Kind {
         name: "ray_cylinder",
         min_fields: 14,
-        predicate: None,
-        oracle: None,
+        predicate: Some(PerLine(crate_ray_cylinder)),
+        oracle: Some(PerLine(oracle_ray_cylinder)),
     },
     Kind {
         name: "ray_quadric",
         min_fields: 17,
-        predicate: None,
-        oracle: None,
+        predicate: Some(PerLine(crate_ray_quadric)),
+        oracle: Some(PerLine(oracle_ray_quadric)),
     },
     Kind {
         name: "ray_triangle",
@@ -218,6 +222,139 @@ fn oracle_plane_side(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_sign_case::<15>(f)?;
     let got = oracle::plane_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
     Ok(compare_signs(want, got))
+}
+
+// ---------------------------------------------------------------------------
+// Rays against quadrics: `inputs... n [t0 [t1]]`
+
+/// How far a root may lie from the fixture's correctly rounded root.
+const ROOT_ULPS: u64 = 4;
+
+/// The expected answer of a ray line after its `inputs` numbers: the count
+/// (`None` for `inf`) and the roots. Spheres and cylinders write a tangent
+/// root twice; quadrics once.
+fn parse_line_answer(
+    f: &[&str],
+    inputs: usize,
+    tangent_twice: bool,
+) -> Result<(Vec<f64>, LineAnswer), String> {
+    if f.len() <= inputs {
+        return Err(format!("expected at least {} fields", inputs + 1));
+    }
+    let v = f[..inputs]
+        .iter()
+        .map(|x| parse_f64(x))
+        .collect::<Result<Vec<_>, _>>()?;
+    let count = match f[inputs] {
+        "inf" => None,
+        n => Some(
+            n.parse::<usize>()
+                .map_err(|_| format!("bad root count {n:?}"))?,
+        ),
+    };
+    let fields = match count {
+        None | Some(0) => 0,
+        Some(1) if tangent_twice => 2,
+        Some(n) => n,
+    };
+    if f.len() != inputs + 1 + fields {
+        return Err(format!(
+            "expected {} fields, found {}",
+            inputs + 1 + fields,
+            f.len()
+        ));
+    }
+    let mut roots = f[inputs + 1..]
+        .iter()
+        .map(|x| parse_f64(x))
+        .collect::<Result<Vec<_>, _>>()?;
+    if count == Some(1) && tangent_twice {
+        if roots[0] != roots[1] {
+            return Err("a tangent's two roots differ".into());
+        }
+        roots.truncate(1);
+    }
+    Ok((v, LineAnswer { count, roots }))
+}
+
+fn compare_roots(want: &LineAnswer, got: Roots) -> Verdict {
+    let roots: Vec<f64> = match got {
+        Roots::One(t) => vec![t],
+        Roots::Two(t0, t1) => vec![t0, t1],
+        _ => vec![],
+    };
+    let close = roots.len() == want.roots.len()
+        && roots
+            .iter()
+            .zip(&want.roots)
+            .all(|(g, w)| ulps_between(*g, *w) <= ROOT_ULPS);
+    if got.count() == want.count && close {
+        Verdict::Pass
+    } else {
+        Verdict::Mismatch {
+            expected: format!("{want:?}"),
+            got: format!("{got:?}"),
+        }
+    }
+}
+
+/// The oracle must reproduce the fixture exactly: the same count and the
+/// same correctly rounded roots.
+fn compare_answers(want: &LineAnswer, got: LineAnswer) -> Verdict {
+    if *want == got {
+        Verdict::Pass
+    } else {
+        Verdict::Mismatch {
+            expected: format!("{want:?}"),
+            got: format!("{got:?}"),
+        }
+    }
+}
+
+fn ray_of(v: &[f64]) -> Result<Ray, String> {
+    Ray::new(p3(v, 0), p3(v, 1)).map_err(|e| e.to_string())
+}
+
+fn crate_ray_sphere(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 10, true)?;
+    let sphere = Sphere::new(p3(&v, 2), v[9]).map_err(|e| e.to_string())?;
+    Ok(compare_roots(&want, sphere.line_roots(&ray_of(&v)?)))
+}
+
+fn oracle_ray_sphere(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 10, true)?;
+    Ok(compare_answers(
+        &want,
+        Quadratic::sphere(p3(&v, 0), p3(&v, 1), p3(&v, 2), v[9]).answer(),
+    ))
+}
+
+fn crate_ray_cylinder(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 13, true)?;
+    let cyl = Cylinder::new(p3(&v, 2), p3(&v, 3), v[12]).map_err(|e| e.to_string())?;
+    Ok(compare_roots(&want, cyl.line_roots(&ray_of(&v)?)))
+}
+
+fn oracle_ray_cylinder(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 13, true)?;
+    let q = Quadratic::cylinder(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), v[12]);
+    Ok(compare_answers(&want, q.answer()))
+}
+
+fn quadric_coefficients(v: &[f64]) -> [f64; 10] {
+    core::array::from_fn(|i| v[6 + i])
+}
+
+fn crate_ray_quadric(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 16, false)?;
+    let q = Quadric::new(quadric_coefficients(&v)).map_err(|e| e.to_string())?;
+    Ok(compare_roots(&want, q.line_roots(&ray_of(&v)?)))
+}
+
+fn oracle_ray_quadric(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 16, false)?;
+    let q = Quadratic::quadric(p3(&v, 0), p3(&v, 1), quadric_coefficients(&v));
+    Ok(compare_answers(&want, q.answer()))
 }
 
 // ---------------------------------------------------------------------------
