@@ -34,7 +34,10 @@ pub enum Roots {
     /// One root: a double root of a quadratic, or the root of a linear
     /// polynomial.
     One(f64),
-    /// Two distinct roots, the smaller first.
+    /// Two distinct roots, the smaller first. (From the ray casts the
+    /// count is exact while the roots are rounded: two roots less than an
+    /// ulp apart may round to the same value, and roots beyond `f64`'s
+    /// range come out as infinities.)
     Two(f64, f64),
     /// Every `t` is a root: all coefficients are zero.
     All,

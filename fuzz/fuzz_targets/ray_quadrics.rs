@@ -54,7 +54,9 @@ fuzz_target!(|input: (u8, [u64; 16])| {
     let roots = match got {
         Roots::One(t) => vec![t],
         Roots::Two(t0, t1) => {
-            assert!(t0 < t1, "{v:?}: {got:?}");
+            // Distinct roots less than an ulp apart round to one value, and
+            // roots beyond f64's range both become infinities.
+            assert!(t0 <= t1, "{v:?}: {got:?}");
             vec![t0, t1]
         }
         _ => vec![],

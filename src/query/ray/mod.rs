@@ -42,21 +42,26 @@ mod sphere;
 
 use crate::roots::Roots;
 
-/// The smallest root inside `range`; for [`Roots::All`] (the line lies on
-/// the surface) the point of `range` nearest `t = 0`.
+/// The smallest finite root inside `range` (a root beyond `f64`'s range,
+/// returned as an infinity, is no hit); for [`Roots::All`] (the line lies
+/// on the surface) the point of `range` nearest `t = 0`.
 #[inline]
 pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
+    let inside = |t: f64| range.contains(t) && t.is_finite();
     match roots {
         Roots::None => None,
-        Roots::One(t) => range.contains(t).then_some(t),
+        Roots::One(t) => inside(t).then_some(t),
         Roots::Two(t1, t2) => {
-            if range.contains(t1) {
+            if inside(t1) {
                 Some(t1)
             } else {
-                range.contains(t2).then_some(t2)
+                inside(t2).then_some(t2)
             }
         }
-        Roots::All => Some(range.min().max(range.max().min(0.0))),
+        Roots::All => {
+            let t = range.min().max(range.max().min(0.0));
+            t.is_finite().then_some(t)
+        }
     }
 }
 
