@@ -321,3 +321,38 @@ fn constructors_reject_bad_input() {
         Err(InputError::InvalidRadius { argument: "radius" })
     );
 }
+
+#[test]
+fn fuzz_findings() {
+    // Coefficients near f64::MAX: doubling them in f64 overflowed.
+    let v: [f64; 16] = [
+        -1.7976926272613756e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        2.925e-321,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        1.06099789543e-313,
+        -1.7976922776554302e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        -1.7976931348623157e308,
+        3.4790120992875e-310,
+    ];
+    let (o, d) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
+    let k: [f64; 10] = core::array::from_fn(|i| v[6 + i]);
+    let got = Quadric::new(k)
+        .unwrap()
+        .line_roots(&Ray::new(o, d).unwrap());
+    let want = Quadratic::quadric(o, d, k).answer();
+    assert_eq!(got.count(), want.count);
+    // Roots beyond f64's range are infinities, and no hit.
+    let s = Sphere::new([0.0; 3], 1.0).unwrap();
+    let ray = Ray::new([-1e308, 0.0, 0.0], [f64::from_bits(1), 0.0, 0.0]).unwrap();
+    assert!(matches!(s.line_roots(&ray), Roots::Two(a, b) if a.is_infinite() && b.is_infinite()));
+    assert!(s.cast(&ray, Interval::FORWARD).is_none());
+}
