@@ -75,6 +75,43 @@ impl<const N: usize> Wide<N> {
         }
     }
 
+    /// The value rounded to 53 significant bits (to nearest, ties to even),
+    /// as `(m, e)` with `value ~ m * 2^e`: `m` is an `f64` integer below
+    /// `2^64` in magnitude (`0.0` for zero), so that values far beyond the
+    /// range of `f64` keep their exponent.
+    #[inline]
+    pub(crate) fn rounded_parts(&self) -> (f64, i32) {
+        let (limbs, len, neg) = self.magnitude();
+        if len == 0 {
+            return (0.0, 0);
+        }
+        // The top 64 bits, with the bits below them folded into a sticky
+        // last bit: that bit lies 11 places below where the conversion
+        // rounds, so it decides only ties and their side, as the full value
+        // would.
+        let top = len - 1;
+        let shift = limbs[top].leading_zeros();
+        let (word, sticky_from, e) = if top == 0 {
+            (limbs[0], 0, 0)
+        } else {
+            let below = limbs[top - 1];
+            let word = if shift == 0 {
+                limbs[top]
+            } else {
+                limbs[top] << shift | below >> (64 - shift)
+            };
+            let lost = if shift == 0 {
+                below != 0
+            } else {
+                below << shift != 0
+            };
+            let rest = limbs[..top - 1].iter().any(|&l| l != 0);
+            (word, (lost || rest) as u64, 64 * top as i32 - shift as i32)
+        };
+        let m = (word | sticky_from) as f64;
+        (if neg { -m } else { m }, e)
+    }
+
     /// `-self` (wrapping).
     #[inline]
     pub(crate) fn neg(&self) -> Self {

@@ -1,0 +1,145 @@
+//! The exact tests of a ray against a triangle, on the original
+//! coordinates: which side of the ray's line an edge passes
+//! ([`orient_dir`]), and the parameter where the line meets the triangle's
+//! plane, rounded from its exact value ([`plane_parameter`]).
+//!
+//! Both are determinants whose rows are a ray's direction `d` (an input
+//! vector) or exact differences of input points: [`orient_dir`] runs the
+//! orient3d ladder on such rows (filter, small-integer exact, sparse exact
+//! terms, big-integer exact); [`plane_parameter`] evaluates its two
+//! determinants exactly in integers and rounds their quotient.
+
+use super::grain::{Grain, pow2, to_integer_i64};
+use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
+use super::sparse;
+use super::wide::Wide;
+use crate::sign::Sign;
+use glam::DVec3;
+
+/// Span (per axis) of the small-integer stage, as in orient3d: values
+/// below `2^61`, differences below `2^62`.
+const SMALL_SPAN: i32 = 61;
+
+/// The exact sign of `det[d, p - o, q - o]`, for finite input (`Zero` for a
+/// NaN or infinite coordinate).
+///
+/// For a ray `o + t d` and a triangle edge `p -> q`, it is positive when
+/// the edge passes the ray's line counterclockwise as seen looking along
+/// `d`, and zero when the line meets the edge's line (or is parallel to
+/// it): the three signs for the edges `v1 v2`, `v2 v0`, `v0 v1` are the
+/// barycentric coordinates' signs of the line's crossing of the plane.
+#[inline]
+pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
+    let (det, _, margin, zsum) = stage_a_rows(d.to_array(), (p - o).to_array(), (q - o).to_array());
+    if certifies(margin, zsum, 0.0) {
+        Sign::of_f64(det)
+    } else {
+        exact(d, o, p, q)
+    }
+}
+
+/// Each axis's finest bit and the widest span, over the given values per
+/// axis; `None` when some axis is all zero.
+#[inline]
+fn grains<const N: usize>(points: &[DVec3; N]) -> Option<([i32; 3], i32)> {
+    let g = [0, 1, 2].map(|k| Grain::of(&points.map(|p| p[k])));
+    if g.iter().any(|g| g.all_zero()) {
+        return None;
+    }
+    let span = g.iter().map(|g| g.span()).max().unwrap_or(0);
+    Some((g.map(|g| g.lo_min), span))
+}
+
+/// The stages after the filter. Scaling every column of the determinant by
+/// a power of two scales it by a positive number, so each axis can be
+/// taken as integers at its own finest bit.
+#[cold]
+#[inline(never)]
+fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
+    if ![d, o, p, q].iter().all(|v| v.is_finite()) {
+        return Sign::Zero;
+    }
+    // An all-zero axis is a zero column.
+    let Some((lo, span)) = grains(&[d, o, p, q]) else {
+        return Sign::Zero;
+    };
+    if span <= SMALL_SPAN {
+        let int = |v: DVec3| [0, 1, 2].map(|k| to_integer_i64(v[k], lo[k]));
+        let oi = int(o);
+        let rel = |v: DVec3| {
+            let v = int(v);
+            [v[0] - oi[0], v[1] - oi[1], v[2] - oi[2]]
+        };
+        return small_det3([int(d), rel(p), rel(q)]);
+    }
+    sparse::orient_dir(d, o, p, q).unwrap_or_else(|| {
+        // `<34, 67, 100>` holds every finite input, as in orient3d.
+        let int = |v: DVec3| [0, 1, 2].map(|k| Wide::<34>::from_f64(v[k], lo[k]));
+        let oi = int(o);
+        let rel = |v: DVec3| {
+            let v = int(v);
+            [0, 1, 2].map(|k| v[k].sub(&oi[k]))
+        };
+        det3_wide::<34, 67, 100>(&[int(d), rel(p), rel(q)]).sign()
+    })
+}
+
+/// The parameter `t` where the line `o + t d` meets the plane of `v0, v1,
+/// v2`: `det[v0 - o, e1, e2] / det[d, e1, e2]` with `e1 = v1 - v0`, `e2 =
+/// v2 - v0`, both determinants exact (in integers), each rounded to 53
+/// bits, then divided: the relative error is below `3 * 2^-53` (three
+/// roundings) when the result is a normal number, and below `2^-1073`
+/// absolutely when it is subnormal. A result that would round to zero is
+/// the smallest subnormal of the exact sign instead, so the sign is always
+/// exact. `NaN` when the line is parallel to the plane (or the triangle
+/// degenerate), or for non-finite input.
+#[cold]
+#[inline(never)]
+pub(crate) fn plane_parameter(o: DVec3, d: DVec3, v0: DVec3, v1: DVec3, v2: DVec3) -> f64 {
+    if ![o, d, v0, v1, v2].iter().all(|v| v.is_finite()) {
+        return f64::NAN;
+    }
+    let Some((lo, span)) = grains(&[o, d, v0, v1, v2]) else {
+        return f64::NAN;
+    };
+    if span <= SMALL_SPAN {
+        // Rows below 2^62, minors below 2^125, determinants below 2^189.
+        quotient::<2, 3, 4>(o, d, [v0, v1, v2], lo)
+    } else {
+        // Every finite input, as in orient3d's last stage.
+        quotient::<34, 67, 100>(o, d, [v0, v1, v2], lo)
+    }
+}
+
+/// [`plane_parameter`] in `D`-limb rows, `M`-limb minors, `R`-limb
+/// determinants.
+fn quotient<const D: usize, const M: usize, const R: usize>(
+    o: DVec3,
+    d: DVec3,
+    v: [DVec3; 3],
+    lo: [i32; 3],
+) -> f64 {
+    let int = |p: DVec3| [0, 1, 2].map(|k| Wide::<D>::from_f64(p[k], lo[k]));
+    let sub = |a: &[Wide<D>; 3], b: &[Wide<D>; 3]| [0, 1, 2].map(|k| a[k].sub(&b[k]));
+    let (oi, v0) = (int(o), int(v[0]));
+    let (e1, e2) = (sub(&int(v[1]), &v0), sub(&int(v[2]), &v0));
+    let num = det3_wide::<D, M, R>(&[sub(&v0, &oi), e1, e2]);
+    let den = det3_wide::<D, M, R>(&[int(d), e1, e2]);
+    let ((mn, en), (md, ed)) = (num.rounded_parts(), den.rounded_parts());
+    if md == 0.0 {
+        return f64::NAN;
+    }
+    // Both scaled by the same power of two (the columns'), which cancels.
+    // `mn / md` lies within [2^-64, 2^64] (or is zero) and is rounded once;
+    // the scaling by `2^(en - ed)` in steps of the same sign is exact
+    // unless the result is subnormal or overflows.
+    let q = mn / md;
+    let k = (en - ed).clamp(-2400, 2400);
+    let third = k / 3;
+    let t = q * pow2(third) * pow2(third) * pow2(k - 2 * third);
+    if t == 0.0 && mn != 0.0 {
+        f64::from_bits(1).copysign(q)
+    } else {
+        t
+    }
+}
