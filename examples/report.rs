@@ -42,6 +42,10 @@ mod orient2d;
 mod orient3d;
 #[path = "report/plane_side.rs"]
 mod plane_side;
+#[path = "../tests/common/ray_cases.rs"]
+mod ray_cases;
+#[path = "report/ray_triangle.rs"]
+mod ray_triangle;
 
 use framework::{Config, Row};
 use std::time::Instant;
@@ -58,6 +62,7 @@ const FAMILIES: &[(&str, Family)] = &[
     ("plane_side", |cfg| plane_side::family().run(cfg)),
     ("nearest", nearest::run),
     ("nearest_build", nearest_build::run),
+    ("ray_triangle", ray_triangle::run),
 ];
 
 fn main() -> std::io::Result<()> {

@@ -210,7 +210,7 @@ fn no_ray_slips_through_shared_edges() {
         .collect();
     let mut double_hits = 0;
     for _ in 0..3000 {
-        let (o, d) = mesh.shared_edge_ray(&mut rng, &edges, &inner);
+        let (o, d, _) = mesh.shared_edge_ray(&mut rng, &edges, &inner);
         let ray = Ray::new(o, d).unwrap();
         let mut exact_hits = 0;
         let mut oracle_hits = 0;

@@ -157,29 +157,41 @@ impl TiledMesh {
             .collect()
     }
 
+    /// The triangles that have vertex `a` or `b`: every triangle a ray
+    /// passing within rounding of the edge `a b` (or of the vertex `a`)
+    /// can meet.
+    pub fn around(&self, a: usize, b: usize) -> Vec<usize> {
+        (0..self.triangles.len())
+            .filter(|&k| self.triangles[k].contains(&a) || self.triangles[k].contains(&b))
+            .collect()
+    }
+
     /// A ray from above (an origin 1 to 10 units over the mesh) aimed at a
     /// rounded point of an interior edge, or (one time in four) at an
     /// interior vertex, which the direction `target - origin` then passes
-    /// within rounding. Its line crosses the mesh's interior, so it meets
-    /// at least one triangle exactly.
+    /// within rounding; and the triangles around that edge or vertex. Its
+    /// line crosses the mesh's interior there, so it meets at least one of
+    /// them exactly.
     pub fn shared_edge_ray(
         &self,
         rng: &mut SplitMix64,
         edges: &[(usize, usize)],
         inner: &[usize],
-    ) -> (DVec3, DVec3) {
-        let target = if rng.next_u64() % 4 == 0 {
-            self.vertices[inner[(rng.next_u64() % inner.len() as u64) as usize]]
+    ) -> (DVec3, DVec3, Vec<usize>) {
+        let (target, around) = if rng.next_u64() % 4 == 0 {
+            let a = inner[(rng.next_u64() % inner.len() as u64) as usize];
+            (self.vertices[a], self.around(a, a))
         } else {
             let (a, b) = edges[(rng.next_u64() % edges.len() as u64) as usize];
             let s = rng.next_f64();
-            self.vertices[a] + (self.vertices[b] - self.vertices[a]) * s
+            let p = self.vertices[a] + (self.vertices[b] - self.vertices[a]) * s;
+            (p, self.around(a, b))
         };
         let o = DVec3::new(
             target.x + uniform_in(rng, -3.0, 3.0),
             target.y + uniform_in(rng, -3.0, 3.0),
             uniform_in(rng, 1.0, 10.0),
         );
-        (o, target - o)
+        (o, target - o, around)
     }
 }

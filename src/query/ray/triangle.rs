@@ -413,34 +413,46 @@ impl Shear {
         tri: &Triangle,
         range: Interval,
     ) -> Option<TriangleHit> {
-        let [a, b, c] = tri.v.map(|p| self.vertex::<K>(p));
-        // Each edge's function from its own two vertices, unfused, so that
-        // the reversed edge of a neighbour computes exactly its negation.
-        let e0 = c[0] * b[1] - c[1] * b[0];
-        let e1 = a[0] * c[1] - a[1] * c[0];
-        let e2 = b[0] * a[1] - b[1] * a[0];
-        if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
-            return None;
-        }
-        let det = e0 + e1 + e2;
-        // NaN: overflowed products.
-        if det == 0.0 || det.is_nan() {
-            return None;
-        }
-        // The sheared system's t is (sum e_i z_i) / (d_kz det), in units of
-        // the scaled direction; the scale converts it back. One division.
-        let dz = self.d[2];
-        let inv = 1.0 / (det * dz);
-        let t = (e0 * a[2] + e1 * b[2] + e2 * c[2]) * inv * self.scale;
-        if !range.contains(t) {
-            return None;
-        }
-        Some(TriangleHit {
-            t,
-            u: e1 * dz * inv,
-            v: e2 * dz * inv,
-        })
+        let v = tri.v.map(|p| self.vertex::<K>(p));
+        sheared_hit(v, self.d[2], self.scale, range)
     }
+}
+
+/// The watertight test on the sheared vertices `(x, y, z)` (see
+/// [`Shear::vertex`]), for a direction scaled by `scale` whose largest
+/// coordinate is `dz`.
+#[inline(always)]
+fn sheared_hit(
+    [a, b, c]: [[f64; 3]; 3],
+    dz: f64,
+    scale: f64,
+    range: Interval,
+) -> Option<TriangleHit> {
+    // Each edge's function from its own two vertices, unfused, so that
+    // the reversed edge of a neighbour computes exactly its negation.
+    let e0 = c[0] * b[1] - c[1] * b[0];
+    let e1 = a[0] * c[1] - a[1] * c[0];
+    let e2 = b[0] * a[1] - b[1] * a[0];
+    if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
+        return None;
+    }
+    let det = e0 + e1 + e2;
+    // NaN: overflowed products.
+    if det == 0.0 || det.is_nan() {
+        return None;
+    }
+    // The sheared system's t is (sum e_i z_i) / (d_kz det), in units of
+    // the scaled direction; the scale converts it back. One division.
+    let inv = 1.0 / (det * dz);
+    let t = (e0 * a[2] + e1 * b[2] + e2 * c[2]) * inv * scale;
+    if !range.contains(t) {
+        return None;
+    }
+    Some(TriangleHit {
+        t,
+        u: e1 * dz * inv,
+        v: e2 * dz * inv,
+    })
 }
 
 impl RayCast for Triangle {
