@@ -113,7 +113,11 @@ fn exact(c: &Case) -> Option<f64> {
         .map(|(num, den)| oracle::ratio_to_f64(&num, &den))
 }
 
-const SINGLE: [(&str, fn(&mut SplitMix64) -> (DVec3, DVec3, [DVec3; 3])); 4] = [
+/// A generator of single-triangle cases.
+type Generate = fn(&mut SplitMix64) -> ray_cases::Case;
+
+/// The single-triangle inputs and their generators.
+const SINGLE: [(&str, Generate); 4] = [
     ("uniform", ray_cases::uniform),
     ("far", ray_cases::far),
     ("near-edge", ray_cases::near_edge),
