@@ -42,6 +42,8 @@ mod orient2d;
 mod orient3d;
 #[path = "report/plane_side.rs"]
 mod plane_side;
+#[path = "report/raster_triangle.rs"]
+mod raster_triangle;
 #[path = "../tests/common/ray_cases.rs"]
 mod ray_cases;
 #[path = "report/ray_triangle.rs"]
@@ -63,6 +65,7 @@ const FAMILIES: &[(&str, Family)] = &[
     ("nearest", nearest::run),
     ("nearest_build", nearest_build::run),
     ("ray_triangle", ray_triangle::run),
+    ("raster_triangle", raster_triangle::run),
 ];
 
 fn main() -> std::io::Result<()> {

@@ -19,15 +19,21 @@
 //!
 //! # Exactness
 //! Each edge function `(b - a) x (p - a)` is stepped incrementally over the
-//! triangle's bounding box in `f64` (one addition per pixel and edge), with
-//! a bound on the error stepping accumulates; a centre whose value lies
-//! within the bound of zero is decided by the exact [`orient2d`] on the
-//! original coordinates. So coverage is exact for every finite input:
-//! centres exactly on an edge get the fill rule, never a rounding.
+//! triangle's bounding box in `f64`: one addition per row, and along a row
+//! its value at the `k`-th centre is the row's value plus `k` steps. A
+//! bound covers the error all this stepping can accumulate; a centre whose
+//! value lies within the bound of zero is decided by the exact
+//! [`orient2d`] on the original coordinates. So coverage is exact for every
+//! finite input: centres exactly on an edge get the fill rule, never a
+//! rounding.
 //!
 //! # Cost
-//! No allocation: covered pixels are reported one span per row to a
-//! callback.
+//! Along a row an edge function is monotone, so each edge covers a prefix
+//! or a suffix of the row: its end is read off the stepped values (where
+//! the function crosses zero) and confirmed pixel by pixel, exactly where
+//! the bound requires. A triangle costs a few operations per row, not per
+//! pixel, and no allocation: covered pixels are reported one span per row
+//! to a callback, which fills them as it likes.
 
 use crate::error::InputError;
 use crate::point::IntoDVec2;
@@ -144,11 +150,12 @@ pub fn rasterize_triangle(
     // Error bound per edge, for every centre of the box: the function at
     // the first centre is within 4u of its permanent-like magnitude
     // `|d| . |p - a|` (two differences, two products, one difference); each
-    // of at most `steps` additions adds `u` times a value at most `max`
+    // of at most `y1 - y0` row steps adds `u` times a value at most `max`
     // (the largest of `|E|` at the box's corners: E is affine) plus the
-    // step's own rounding error, `u |step|`, accumulated once per step.
-    // `4u` per step and a factor 2 cover second-order terms and the
-    // rounding of the bound itself.
+    // step's own rounding error, `u |step|`; `row + k * step_x` adds `k u
+    // |step_x|` (the step's rounding, `k` times), `u k |step_x|` (the
+    // product) and `u max` (the sum). `4u` per step of `steps` and a factor
+    // 2 cover all of it, second-order terms and the rounding of the bound.
     let bound = edges.map(|e| {
         let corners = [
             corner,
@@ -166,39 +173,66 @@ pub fn rasterize_triangle(
     // Values too large for f64 (vertices near the largest floats): every
     // centre goes to the exact test.
     let usable = bound.iter().all(|b| b.is_finite());
+    let n = x1 - x0;
     let mut row = edges.map(|e| e.at(corner));
     let mut covered = 0;
     for y in y0..y1 {
         let py = y as f64 + 0.5;
-        let mut value = row;
-        let (mut start, mut end) = (None, x1);
-        for x in x0..x1 {
-            let p = DVec2::new(x as f64 + 0.5, py);
-            let inside = (0..3).all(|i| {
-                if usable && value[i] > bound[i] {
-                    true
-                } else if usable && value[i] < -bound[i] {
-                    false
-                } else {
-                    edges[i].covers_exactly(p)
-                }
-            });
-            match (inside, start) {
-                (true, None) => start = Some(x),
-                (false, Some(_)) => {
-                    // A row of a triangle is one run: the rest is outside.
-                    end = x;
-                    break;
-                }
-                _ => {}
+        // Whether edge `i` covers the `k`-th centre of the row: the stepped
+        // value where its bound certifies the sign, else the exact test.
+        let covers = |i: usize, k: u32| {
+            let value = row[i] + k as f64 * edges[i].step_x;
+            if usable && value > bound[i] {
+                true
+            } else if usable && value < -bound[i] {
+                false
+            } else {
+                edges[i].covers_exactly(DVec2::new((x0 + k) as f64 + 0.5, py))
             }
-            for i in 0..3 {
-                value[i] += edges[i].step_x;
+        };
+        // The row's span is the intersection of the three edges' runs. Along
+        // a row an edge function is monotone, so each edge's run is a prefix
+        // or a suffix of the row (all or nothing for a horizontal edge):
+        // its end is found from the crossing the stepped value predicts,
+        // then moved a pixel at a time while the exact answer says so.
+        let (mut from, mut to) = (0, n);
+        for i in 0..3 {
+            let slope = edges[i].step_x;
+            if slope == 0.0 || !usable {
+                // Horizontal (or too large to predict): scan the row.
+                let k = (from..to).find(|&k| covers(i, k)).unwrap_or(to);
+                let end = (k..to).find(|&k| !covers(i, k)).unwrap_or(to);
+                (from, to) = (k, end);
+            } else {
+                let guess = (-row[i] / slope).clamp(-1.0, n as f64 + 1.0);
+                let mut k = guess.max(0.0).min(n as f64) as u32;
+                if slope > 0.0 {
+                    // A suffix: its first pixel.
+                    while k > 0 && covers(i, k - 1) {
+                        k -= 1;
+                    }
+                    while k < n && !covers(i, k) {
+                        k += 1;
+                    }
+                    from = from.max(k);
+                } else {
+                    // A prefix: one past its last pixel.
+                    while k < n && covers(i, k) {
+                        k += 1;
+                    }
+                    while k > 0 && !covers(i, k - 1) {
+                        k -= 1;
+                    }
+                    to = to.min(k);
+                }
+            }
+            if from >= to {
+                break;
             }
         }
-        if let Some(s) = start {
-            span(y, s, end);
-            covered += (end - s) as u64;
+        if from < to {
+            span(y, x0 + from, x0 + to);
+            covered += (to - from) as u64;
         }
         for i in 0..3 {
             row[i] += edges[i].step_y;
