@@ -137,6 +137,19 @@ proptest! {
         check_fast(&scaled(c, k), Interval::FORWARD)?;
     }
 
+    /// The origin moved `2^j` times farther along the ray, aimed at the
+    /// same point: the bits the case spans grow with `j`, through every
+    /// integer width the exact parameter is computed in.
+    #[test]
+    fn exact_across_spans(seed: u64, kind: u8, j in 0..900i32, k in -100i32..100) {
+        let (o, d, v) = case_from(seed, kind);
+        let target = o + d;
+        let far = target + (o - target) * 2f64.powi(j);
+        let c = (far, target - far, v);
+        check_exact(&c, Interval::FORWARD)?;
+        check_exact(&scaled(c, k), Interval::FORWARD)?;
+    }
+
     #[test]
     fn exact_matches_oracle_on_any_coordinates(
         o in any_dvec3(), d in any_dvec3(), a in any_dvec3(), b in any_dvec3(), c in any_dvec3(),

@@ -30,7 +30,10 @@ const SMALL_SPAN: i32 = 61;
 /// barycentric coordinates' signs of the line's crossing of the plane.
 #[inline]
 pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
-    let (det, _, margin, zsum) = stage_a_rows(d.to_array(), (p - o).to_array(), (q - o).to_array());
+    // det[d, p - o, q - o] = det[d, p - o, q - p]: a row as long as the
+    // edge, not as the distance to the origin, keeps the filter's bound
+    // small for far origins.
+    let (det, _, margin, zsum) = stage_a_rows(d.to_array(), (p - o).to_array(), (q - p).to_array());
     if certifies(margin, zsum, 0.0) {
         Sign::of_f64(det)
     } else {
@@ -42,7 +45,12 @@ pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
 /// axis; `None` when some axis is all zero.
 #[inline]
 fn grains<const N: usize>(points: &[DVec3; N]) -> Option<([i32; 3], i32)> {
-    let g = [0, 1, 2].map(|k| Grain::of(&points.map(|p| p[k])));
+    let (xs, ys, zs) = (
+        points.map(|p| p.x),
+        points.map(|p| p.y),
+        points.map(|p| p.z),
+    );
+    let g = [Grain::of(&xs), Grain::of(&ys), Grain::of(&zs)];
     if g.iter().any(|g| g.all_zero()) {
         return None;
     }
@@ -64,7 +72,13 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
         return Sign::Zero;
     };
     if span <= SMALL_SPAN {
-        let int = |v: DVec3| [0, 1, 2].map(|k| to_integer_i64(v[k], lo[k]));
+        let int = |v: DVec3| {
+            [
+                to_integer_i64(v.x, lo[0]),
+                to_integer_i64(v.y, lo[1]),
+                to_integer_i64(v.z, lo[2]),
+            ]
+        };
         let oi = int(o);
         let rel = |v: DVec3| {
             let v = int(v);
@@ -74,11 +88,17 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
     }
     sparse::orient_dir(d, o, p, q).unwrap_or_else(|| {
         // `<34, 67, 100>` holds every finite input, as in orient3d.
-        let int = |v: DVec3| [0, 1, 2].map(|k| Wide::<34>::from_f64(v[k], lo[k]));
+        let int = |v: DVec3| {
+            [
+                Wide::<34>::from_f64(v.x, lo[0]),
+                Wide::from_f64(v.y, lo[1]),
+                Wide::from_f64(v.z, lo[2]),
+            ]
+        };
         let oi = int(o);
         let rel = |v: DVec3| {
             let v = int(v);
-            [0, 1, 2].map(|k| v[k].sub(&oi[k]))
+            [v[0].sub(&oi[0]), v[1].sub(&oi[1]), v[2].sub(&oi[2])]
         };
         det3_wide::<34, 67, 100>(&[int(d), rel(p), rel(q)]).sign()
     })
@@ -93,8 +113,6 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
 /// the smallest subnormal of the exact sign instead, so the sign is always
 /// exact. `NaN` when the line is parallel to the plane (or the triangle
 /// degenerate), or for non-finite input.
-#[cold]
-#[inline(never)]
 pub(crate) fn plane_parameter(o: DVec3, d: DVec3, v0: DVec3, v1: DVec3, v2: DVec3) -> f64 {
     if ![o, d, v0, v1, v2].iter().all(|v| v.is_finite()) {
         return f64::NAN;
@@ -102,13 +120,79 @@ pub(crate) fn plane_parameter(o: DVec3, d: DVec3, v0: DVec3, v1: DVec3, v2: DVec
     let Some((lo, span)) = grains(&[o, d, v0, v1, v2]) else {
         return f64::NAN;
     };
+    // Values below 2^span, rows (differences) below 2^(span + 1), minors
+    // below 2^(2 span + 3), determinants below 2^(3 span + 5): the sizes
+    // hold them with a sign bit to spare.
+    let v = [v0, v1, v2];
     if span <= SMALL_SPAN {
-        // Rows below 2^62, minors below 2^125, determinants below 2^189.
-        quotient::<2, 3, 4>(o, d, [v0, v1, v2], lo)
+        small_quotient(o, d, v, lo)
+    } else if span <= 125 {
+        quotient::<2, 4, 6>(o, d, v, lo)
+    } else if span <= 253 {
+        quotient::<4, 8, 12>(o, d, v, lo)
+    } else if span <= 509 {
+        quotient::<8, 16, 24>(o, d, v, lo)
     } else {
         // Every finite input, as in orient3d's last stage.
-        quotient::<34, 67, 100>(o, d, [v0, v1, v2], lo)
+        quotient::<34, 67, 100>(o, d, v, lo)
     }
+}
+
+/// [`plane_parameter`] in native integers, for values below `2^61` at
+/// the finest bit of each axis: rows in `i64` (below `2^62`), the normal
+/// `e1 x e2` in `i128` (below `2^125`), the determinants as 189-bit sums.
+fn small_quotient(o: DVec3, d: DVec3, v: [DVec3; 3], lo: [i32; 3]) -> f64 {
+    let int = |p: DVec3| {
+        [
+            to_integer_i64(p.x, lo[0]),
+            to_integer_i64(p.y, lo[1]),
+            to_integer_i64(p.z, lo[2]),
+        ]
+    };
+    let sub = |a: [i64; 3], b: [i64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    let v0 = int(v[0]);
+    let (e1, e2) = (sub(int(v[1]), v0), sub(int(v[2]), v0));
+    let cross = |i: usize, j: usize| e1[i] as i128 * e2[j] as i128 - e1[j] as i128 * e2[i] as i128;
+    let n = [cross(1, 2), cross(2, 0), cross(0, 1)];
+    let num = dot_wide(sub(v0, int(o)), n);
+    let den = dot_wide(int(d), n);
+    // Both within `2^-53 (1 + 2^-11)` of the exact integers, far inside the
+    // range of `f64`; the column scales cancel in the quotient.
+    if den == 0.0 { f64::NAN } else { num / den }
+}
+
+/// `a . n` for `|a_k| < 2^62`, `|n_k| < 2^125`, rounded to `f64` within
+/// `2^-53 (1 + 2^-11)` relative: the sum is kept exactly as a high `i128`
+/// and a low `u64` word, `value = high 2^64 + low` (as in orient3d's small
+/// stage), then converted from its magnitude.
+fn dot_wide(a: [i64; 3], n: [i128; 3]) -> f64 {
+    let mut high: i128 = 0;
+    let mut low: u128 = 0;
+    for k in 0..3 {
+        let z = a[k] as i128;
+        high += z * (n[k] >> 64);
+        let zl = z * (n[k] as u64 as i128);
+        high += zl >> 64;
+        low += zl as u64 as u128;
+    }
+    high += (low >> 64) as i128;
+    let low = low as u64;
+    // The magnitude as `h 2^64 + l`, `h >= 0`.
+    let neg = high < 0;
+    let (h, l) = if neg {
+        ((!high + (low == 0) as i128) as u128, low.wrapping_neg())
+    } else {
+        (high as u128, low)
+    };
+    let m = if h >> 64 == 0 {
+        // Below 2^128: one correctly rounded conversion.
+        ((h << 64) | l as u128) as f64
+    } else {
+        // `l` is below half an ulp of the rounded `h 2^64`: dropping it
+        // moves the result by less than `2^-64` relative.
+        h as f64 * 18446744073709551616.0
+    };
+    if neg { -m } else { m }
 }
 
 /// [`plane_parameter`] in `D`-limb rows, `M`-limb minors, `R`-limb
@@ -119,8 +203,15 @@ fn quotient<const D: usize, const M: usize, const R: usize>(
     v: [DVec3; 3],
     lo: [i32; 3],
 ) -> f64 {
-    let int = |p: DVec3| [0, 1, 2].map(|k| Wide::<D>::from_f64(p[k], lo[k]));
-    let sub = |a: &[Wide<D>; 3], b: &[Wide<D>; 3]| [0, 1, 2].map(|k| a[k].sub(&b[k]));
+    let int = |p: DVec3| {
+        [
+            Wide::<D>::from_f64(p.x, lo[0]),
+            Wide::from_f64(p.y, lo[1]),
+            Wide::from_f64(p.z, lo[2]),
+        ]
+    };
+    let sub =
+        |a: &[Wide<D>; 3], b: &[Wide<D>; 3]| [a[0].sub(&b[0]), a[1].sub(&b[1]), a[2].sub(&b[2])];
     let (oi, v0) = (int(o), int(v[0]));
     let (e1, e2) = (sub(&int(v[1]), &v0), sub(&int(v[2]), &v0));
     let num = det3_wide::<D, M, R>(&[sub(&v0, &oi), e1, e2]);

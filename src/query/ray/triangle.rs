@@ -64,11 +64,12 @@ impl TriangleHit {
 /// `2^-53`, the unit roundoff.
 const U: f64 = f64::EPSILON / 2.0;
 
-/// Orient3d's filter constant `(7 + 56 u) u`, here for `det[d, a_j, a_k]`
+/// Orient3d's filter constant `(7 + 56 u) u`, here for `det[d, a_j, e_jk]`
 /// whose rows are the direction and two rounded differences, times the six
-/// products the permanent is bounded by (`6 D M^2` for `D` the largest
-/// direction coordinate, `M` the largest difference), with a margin for
-/// the rounding of the bound itself.
+/// products the permanent is bounded by (`6 D M E` for `D` the largest
+/// direction coordinate, `M` the largest vertex-to-origin difference and
+/// `E` the largest edge coordinate), with a margin for the rounding of the
+/// bound itself.
 const EDGE_BOUND: f64 = 6.0 * (7.0 + 56.0 * U) * U * (1.0 + 1.0 / (1u64 << 40) as f64);
 
 /// Beyond this magnitude of the direction or of a difference, the filters
@@ -182,9 +183,11 @@ impl Triangle {
     /// Each sign comes from a floating-point filter, or when the filter
     /// cannot certify it, from the crate's exact orient3d machinery.
     ///
-    /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`; it is computed in
-    /// `f64` with an error bound, and when the bound exceeds 4 units of
-    /// rounding, from the two determinants evaluated exactly in integers.
+    /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`, from the two
+    /// determinants evaluated exactly in integers, each rounded to `f64`,
+    /// then divided: three roundings. (An `f64` evaluation with an error
+    /// bound cannot certify 4 units: the bound of the numerator alone is 5
+    /// units times its condition number, which is at least 1.)
     /// Its sign is always exact (a `t` that would round to zero from a
     /// non-zero value is the smallest subnormal of that sign), so the
     /// bound `t >= 0` of [`Interval::FORWARD`] is decided exactly; other
@@ -212,17 +215,23 @@ impl Triangle {
     pub fn cast_exact(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
         let [v0, v1, v2] = self.v;
         let (o, d) = (ray.origin(), ray.direction());
+        // det[d, a_j, a_k] = det[d, a_j, v_k - v_j]: with the edge as a row,
+        // the rounding of the long rows (a far origin) costs relative to the
+        // edge's length, not to the distance, and the filter certifies far
+        // rays as it does near ones.
         let a = [v0 - o, v1 - o, v2 - o];
+        let e = [v2 - v1, v0 - v2, v1 - v0];
         let w = [
-            d.dot(a[1].cross(a[2])),
-            d.dot(a[2].cross(a[0])),
-            d.dot(a[0].cross(a[1])),
+            d.dot(a[1].cross(e[0])),
+            d.dot(a[2].cross(e[1])),
+            d.dot(a[0].cross(e[2])),
         ];
         let m = a[0].abs().max(a[1].abs()).max(a[2].abs()).max_element();
+        let em = e[0].abs().max(e[1].abs()).max(e[2].abs()).max_element();
         let dm = d.abs().max_element();
         // Certified signs, or `None` where the filter cannot tell.
-        let filtered = if m.max(dm) <= FILTER_MAX {
-            let bound = EDGE_BOUND * dm * m * m + ABS_SLACK;
+        let filtered = if m.max(dm).max(em) <= FILTER_MAX {
+            let bound = EDGE_BOUND * dm * m * em + ABS_SLACK;
             w.map(|w| {
                 if w > bound {
                     Some(Sign::Positive)
@@ -251,7 +260,7 @@ impl Triangle {
             (true, false) => 1.0,
             (false, true) => -1.0,
         };
-        let t = plane_t(o, d, self.v);
+        let t = plane_parameter(o, d, v0, v1, v2);
         if !range.contains(t) {
             return None;
         }
@@ -275,62 +284,6 @@ impl Triangle {
             (nz[1] / k, nz[2] / k)
         };
         Some(TriangleHit { t, u, v })
-    }
-}
-
-/// The parameter where the line `o + t d` meets the plane of `v`, for a
-/// line known to cross the triangle: the `f64` quotient when its error
-/// bound certifies [`EXACT_T_ULPS`], else the exact quotient rounded.
-///
-/// With `e_i` and `a_0 = v_0 - o` rounded and `n = e_1 x e_2` computed,
-/// let `t* = (a0_exact . n) / (d . n)`, the exact parameter of the plane
-/// through `v_0` with normal `n`. Then:
-/// - `|t* - t_exact| = |(v_0 - p) . (n - n_exact)| / |d . n|` for the exact
-///   hit point `p`, which lies in the triangle, so `|v_0 - p|_k <=
-///   max(|e1_k|, |e2_k|)` (up to the rounding of `e`); each `|n_k -
-///   n_exact_k| <= 5u (|e1_i e2_j| + |e1_j e2_i|)` (one rounding of the
-///   edges, one per product, one for the difference, with a margin): `G`.
-/// - `fl(a_0 . n)` is within `5u |a_0| . |n|` of `a0_exact . n` (the
-///   difference's rounding, the product's and two sums'), `fl(d . n)`
-///   within `4u |d| . |n|`, the quotient adds `u`.
-///
-/// So `|t - t_exact| / |t_exact|` is at most `dT/T + dW/W + u + 3G/T` to
-/// first order, with `T`, `W` the lower bounds `|fl| - d`; the test asks
-/// each of the two parts for half the budget (less `u`), with a 1% margin
-/// for the second-order terms and the rounding of the bound itself.
-#[inline]
-fn plane_t(o: DVec3, d: DVec3, [v0, v1, v2]: [DVec3; 3]) -> f64 {
-    let (e1, e2, a0) = (v1 - v0, v2 - v0, v0 - o);
-    let n = e1.cross(e2);
-    let (num, den) = (a0.dot(n), d.dot(n));
-    let t = num / den;
-    let (ae1, ae2, an) = (e1.abs(), e2.abs(), n.abs());
-    let m = ae1.max(ae2).max(a0.abs()).max(d.abs()).max_element();
-    let dnum = 5.0 * U * a0.abs().dot(an);
-    let dden = 4.0 * U * d.abs().dot(an);
-    let pn = DVec3::new(
-        ae1.y * ae2.z + ae1.z * ae2.y,
-        ae1.z * ae2.x + ae1.x * ae2.z,
-        ae1.x * ae2.y + ae1.y * ae2.x,
-    );
-    let g = 5.0 * U * ae1.max(ae2).dot(pn);
-    let (lnum, lden) = (num.abs() - dnum, den.abs() - dden);
-    // Half the budget each, less the quotient's rounding, with a margin.
-    const HALF: f64 = 0.99 * 0.5 * (EXACT_T_ULPS - 1.0) * U;
-    // No overflow below `FILTER_MAX`; above `ABS_SLACK` the underflow of
-    // products is negligible against the bound; a subnormal quotient has
-    // no relative bound.
-    let certified = m <= FILTER_MAX
-        && lnum >= ABS_SLACK
-        && lden >= ABS_SLACK
-        && dnum + 3.0 * g <= HALF * lnum
-        && dden <= HALF * lden
-        && t.abs() >= f64::MIN_POSITIVE
-        && t.is_finite();
-    if certified {
-        t
-    } else {
-        plane_parameter(o, d, v0, v1, v2)
     }
 }
 
