@@ -32,9 +32,9 @@ pub struct Case {
 }
 
 /// The triangle's legs, by area in pixels.
-const SIZES: [u32; 6] = [8, 128, 2048, 8192, 32768, 100352];
+pub const SIZES: [u32; 6] = [8, 128, 2048, 8192, 32768, 100352];
 
-fn case(rng: &mut exactray::hard_inputs::SplitMix64, area: u32) -> Case {
+pub fn case(rng: &mut exactray::hard_inputs::SplitMix64, area: u32) -> Case {
     let leg = (2.0 * area as f64).sqrt();
     let angle = rng.next_f64() * std::f64::consts::TAU;
     let (s, c) = angle.sin_cos();
@@ -116,7 +116,7 @@ fn naive(c: &Case, mut f: impl FnMut(u32, u32)) {
     }
 }
 
-fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
+pub fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
     vec![
         method("exactray", |c: &Case| {
             rasterize_triangle(c.v[0], c.v[1], c.v[2], c.w, c.h, |_, _, _| {}).unwrap_or(0)
