@@ -207,9 +207,11 @@ proptest! {
 }
 
 /// Rays aimed at the interior edges and vertices of a tiled height field:
-/// the watertight and the exact variant hit at least one triangle of the
-/// mesh for every ray (and the oracle agrees that one is hit), and the
-/// exact variant hits exactly the triangles the oracle hits.
+/// the exact variant hits exactly the triangles the oracle hits, and the
+/// watertight and the exact variant hit at least one triangle of the mesh
+/// for every ray that passes through the surface there (its exact line
+/// meets the triangles around the target from the front; a ray that only
+/// touches a ridge may pass over it within rounding).
 #[test]
 fn no_ray_slips_through_shared_edges() {
     let mut rng = SplitMix64::new(7);
@@ -221,12 +223,11 @@ fn no_ray_slips_through_shared_edges() {
             Triangle::new(v[0], v[1], v[2]).unwrap()
         })
         .collect();
-    let mut double_hits = 0;
+    let (mut double_hits, mut crossing) = (0, 0);
     for _ in 0..3000 {
-        let (o, d, _) = mesh.shared_edge_ray(&mut rng, &edges, &inner);
+        let (o, d, around) = mesh.shared_edge_ray(&mut rng, &edges, &inner);
         let ray = Ray::new(o, d).unwrap();
         let mut exact_hits = 0;
-        let mut oracle_hits = 0;
         let mut watertight_hits = 0;
         for (k, tri) in tris.iter().enumerate() {
             let case = (o, d, mesh.triangle(k));
@@ -234,16 +235,27 @@ fn no_ray_slips_through_shared_edges() {
             let got = tri.cast_exact(&ray, Interval::FORWARD).is_some();
             assert_eq!(got, want, "triangle {k}, ray {o:?} {d:?}");
             exact_hits += got as u32;
-            oracle_hits += want as u32;
             watertight_hits += tri.cast_watertight(&ray, Interval::FORWARD).is_some() as u32;
         }
-        assert!(oracle_hits >= 1, "the ray {o:?} {d:?} misses the mesh");
-        assert!(
-            exact_hits >= 1 && watertight_hits >= 1,
-            "slipped through: {o:?} {d:?}"
-        );
+        let lines: Vec<_> = around
+            .iter()
+            .map(|&k| {
+                let v = mesh.triangle(k).map(|p| p.to_array());
+                oracle::line_triangle(o.to_array(), d.to_array(), v)
+            })
+            .collect();
+        let meets = lines.iter().any(|l| l.t.is_some());
+        if meets && lines.iter().all(|l| l.t.is_none() || l.front) {
+            crossing += 1;
+            assert!(
+                exact_hits >= 1 && watertight_hits >= 1,
+                "slipped through: {o:?} {d:?}"
+            );
+        }
         double_hits += (exact_hits >= 2) as u32;
     }
+    // Nearly every ray passes through the surface at its target.
+    assert!(crossing > 2500, "{crossing}");
     // The aim is close enough that rays do meet shared edges exactly (a hit
     // on both triangles): otherwise the test would not test edges.
     assert!(double_hits > 0);

@@ -348,6 +348,9 @@ pub struct LineTriangle {
     /// `(num, den)` of the crossing's parameter, when the line meets the
     /// triangle off its plane.
     pub t: Option<(BigInt, BigInt)>,
+    /// The line meets the triangle's front: `det[d, v1 - v0, v2 - v0] < 0`,
+    /// the direction against the normal of the counterclockwise order.
+    pub front: bool,
 }
 
 /// The signs of `det[d, v_j - o, v_k - o]` over the edges `(1, 2), (2, 0),
@@ -369,19 +372,21 @@ pub fn line_triangle(o: [f64; 3], d: [f64; 3], v: [[f64; 3]; 3]) -> LineTriangle
     let coplanar = w == [0, 0, 0];
     let crosses = !coplanar && (w.iter().all(|&s| s >= 0) || w.iter().all(|&s| s <= 0));
     if !crosses {
-        return LineTriangle { coplanar, t: None };
+        return LineTriangle {
+            coplanar,
+            t: None,
+            front: false,
+        };
     }
     let (e1, e2) = (sub(&vi[1], &vi[0]), sub(&vi[2], &vi[0]));
     let num = det3(&[a[0].clone(), e1.clone(), e2.clone()]);
     let den = det3(&[di, e1, e2]);
-    let t = if den.is_negative() {
-        (-num, -den)
-    } else {
-        (num, den)
-    };
+    let front = den.is_negative();
+    let t = if front { (-num, -den) } else { (num, den) };
     LineTriangle {
         coplanar,
         t: Some(t),
+        front,
     }
 }
 
