@@ -314,12 +314,25 @@ fn degenerate_triangles_and_coplanar_rays_miss() {
     let line = Triangle::new([0.0; 3], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]).unwrap();
     let point = Triangle::new([1.0; 3], [1.0; 3], [1.0; 3]).unwrap();
     let ray = Ray::new([0.5, 0.0, 1.0], [0.0, 1.0, -0.5]).unwrap();
-    for tri in [line, point] {
+    // Exactly collinear (doubling is exact) but with rounded differences:
+    // no variant may hit it, whatever its rounding says.
+    let p = DVec3::new(0.1, 0.3, 0.7);
+    let thin = Triangle::new(p, p * 2.0, p * 4.0).unwrap();
+    let through = Ray::new(
+        [0.3, 0.0, 0.0],
+        DVec3::new(0.3, 0.9, 2.1) - DVec3::new(0.3, 0.0, 0.0),
+    )
+    .unwrap();
+    for (tri, ray) in [(line, ray), (point, ray), (thin, through)] {
         assert!(tri.is_degenerate());
-        assert_eq!(tri.normal(), DVec3::ZERO);
-        assert!(tri.cast_exact(&ray, Interval::FORWARD).is_none());
-        assert!(tri.cast(&ray, Interval::FORWARD).is_none());
+        let all = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+        assert!(tri.cast_exact(&ray, all).is_none());
+        assert!(tri.cast_mt(&ray, all).is_none());
+        assert!(tri.cast_watertight(&ray, all).is_none());
+        assert!(tri.cast(&ray, all).is_none() && !tri.hits(&ray, all));
     }
+    assert_eq!(line.normal(), DVec3::ZERO);
+    assert_eq!(point.normal(), DVec3::ZERO);
     let tri = Triangle::new([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
     assert!(!tri.is_degenerate());
     // In the plane z = 0, through the triangle.

@@ -12,7 +12,8 @@ use glam::{DVec2, DVec3};
 /// `(v1 - v0) x (v2 - v0)` points to.
 ///
 /// A degenerate triangle (collinear or coincident vertices) is a valid
-/// value: every ray cast misses it (see [`Triangle::is_degenerate`]).
+/// value: every ray cast of every variant misses it (see
+/// [`Triangle::is_degenerate`]).
 ///
 /// ```
 /// use exactray::shape::Triangle;
@@ -25,6 +26,9 @@ use glam::{DVec2, DVec3};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle {
     pub(crate) v: [DVec3; 3],
+    /// [`Triangle::is_degenerate`], decided once at construction so that
+    /// every cast can miss a degenerate triangle for the price of a branch.
+    pub(crate) degenerate: bool,
 }
 
 impl Triangle {
@@ -39,7 +43,10 @@ impl Triangle {
     ) -> Result<Triangle, InputError> {
         let v = [v0.into_dvec3(), v1.into_dvec3(), v2.into_dvec3()];
         check_finite3(&[("v0", v[0]), ("v1", v[1]), ("v2", v[2])])?;
-        Ok(Triangle { v })
+        Ok(Triangle {
+            v,
+            degenerate: collinear(&v),
+        })
     }
 
     /// The vertices `[v0, v1, v2]`.
@@ -58,12 +65,9 @@ impl Triangle {
     /// let line = Triangle::new([0.1; 3], [0.2; 3], [0.3; 3]).unwrap();
     /// assert!(line.is_degenerate());
     /// ```
+    #[inline]
     pub fn is_degenerate(&self) -> bool {
-        let plane = |i: usize, j: usize| {
-            let p = self.v.map(|v| DVec2::new(v[i], v[j]));
-            orient2d(p[0], p[1], p[2])
-        };
-        plane(0, 1) == Sign::Zero && plane(1, 2) == Sign::Zero && plane(2, 0) == Sign::Zero
+        self.degenerate
     }
 
     /// The unit normal `(v1 - v0) x (v2 - v0) / |...|`, or zero when the
@@ -82,4 +86,15 @@ impl Triangle {
         let unit = |v: DVec3| v * unit_pow2(v.abs().max_element());
         unit(unit(e1).cross(unit(e2))).normalize_or_zero()
     }
+}
+
+/// Whether the points are exactly collinear: the cross product of their
+/// differences is zero exactly when its three projections on the
+/// coordinate planes are.
+fn collinear(v: &[DVec3; 3]) -> bool {
+    let plane = |i: usize, j: usize| {
+        let p = v.map(|v| DVec2::new(v[i], v[j]));
+        orient2d(p[0], p[1], p[2])
+    };
+    plane(0, 1) == Sign::Zero && plane(1, 2) == Sign::Zero && plane(2, 0) == Sign::Zero
 }

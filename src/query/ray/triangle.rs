@@ -8,9 +8,11 @@
 //! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | a little more |
 //!
 //! Every variant takes a parameter [`Interval`] and reports the hit only
-//! when its `t` lies in it. A ray whose line lies in the triangle's plane
-//! (a coplanar ray) and a degenerate triangle (collinear vertices) are
-//! always a miss; so is a ray parallel to the plane.
+//! when its `t` lies in it. A degenerate triangle (collinear vertices,
+//! decided exactly when it is built) is always a miss. A ray whose line
+//! lies in the triangle's plane (a coplanar ray) or runs parallel to it is
+//! always a miss for the exact variant, and for the others wherever their
+//! rounded determinant comes out zero (see each).
 //!
 //! The barycentric coordinates `u` (of `v1`) and `v` (of `v2`) place the
 //! hit at `(1 - u - v) v0 + u v1 + v v2` ([`TriangleHit::point`]).
@@ -91,10 +93,10 @@ impl Triangle {
     ///
     /// The hit test is on rounded barycentrics: a ray aimed at an edge
     /// shared by two triangles can miss both (the two triangles compute
-    /// that edge's coordinate from different operands). Coplanar rays,
-    /// rays parallel to the plane and degenerate triangles give
-    /// `det == 0` in exact arithmetic; a `det` that computes as zero is a
-    /// miss, one that rounds away from zero may give a hit. No division by
+    /// that edge's coordinate from different operands). Coplanar rays and
+    /// rays parallel to the plane give `det == 0` in exact arithmetic; a
+    /// `det` that computes as zero is a miss, one that rounds away from
+    /// zero may give a hit. A degenerate triangle is a miss. No division by
     /// zero and no NaN reaches the answer: overflowing products fail the
     /// comparisons and miss.
     ///
@@ -107,6 +109,9 @@ impl Triangle {
     /// ```
     #[inline]
     pub fn cast_mt(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
+        if self.degenerate {
+            return None;
+        }
         let [v0, v1, v2] = self.v;
         let (o, d) = (ray.origin(), ray.direction());
         let (e1, e2) = (v1 - v0, v2 - v0);
@@ -150,8 +155,9 @@ impl Triangle {
     /// magnitudes as theirs. The per-vertex rounding that makes it
     /// watertight also makes it inexact: rays within a few ulps of an edge
     /// may be classified on the wrong side of it (consistently for both
-    /// triangles). Coplanar rays and degenerate triangles give a zero
-    /// determinant and miss, as does a determinant that rounds to zero.
+    /// triangles). Coplanar and parallel rays give a zero determinant in
+    /// exact arithmetic: a miss where it computes as zero, possibly a hit
+    /// where it rounds away from zero. A degenerate triangle is a miss.
     ///
     /// ```
     /// use exactray::ray::{Interval, Ray};
@@ -166,6 +172,9 @@ impl Triangle {
     /// ```
     #[inline]
     pub fn cast_watertight(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
+        if self.degenerate {
+            return None;
+        }
         Shear::of(ray).cast(self, range)
     }
 
@@ -411,7 +420,9 @@ fn sheared_hit(
 impl RayCast for Triangle {
     /// The watertight hit ([`Triangle::cast_watertight`]), with the unit
     /// normal `(v1 - v0) x (v2 - v0)` normalized (the front side, whichever
-    /// side the ray comes from). A degenerate triangle is never hit.
+    /// side the ray comes from). A degenerate triangle is never hit; nor is
+    /// one so thin that the cross product of its rounded edges vanishes
+    /// (it has no unit normal to report).
     ///
     /// ```
     /// use exactray::query::ray::RayCast;
@@ -437,6 +448,7 @@ impl RayCast for Triangle {
         })
     }
 
+    /// Whether [`RayCast::cast`] hits, without normalizing on a hit.
     #[inline]
     fn hits(&self, ray: &Ray, range: Interval) -> bool {
         self.cast_watertight(ray, range).is_some() && self.normal() != DVec3::ZERO
