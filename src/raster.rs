@@ -136,8 +136,9 @@ pub fn rasterize_triangle(
     // The pixels whose centres the bounding box can hold, clipped.
     let lo = v0.min(v1).min(v2);
     let hi = v0.max(v1).max(v2);
-    let first = |v: f64, n: u32| (v - 0.5).ceil().clamp(0.0, n as f64) as u32;
-    let last = |v: f64, n: u32| ((v - 0.5).floor() + 1.0).clamp(0.0, n as f64) as u32;
+    // libm: `f64::ceil` and `floor` need `std`.
+    let first = |v: f64, n: u32| libm::ceil(v - 0.5).clamp(0.0, n as f64) as u32;
+    let last = |v: f64, n: u32| (libm::floor(v - 0.5) + 1.0).clamp(0.0, n as f64) as u32;
     let (x0, x1) = (first(lo.x, width), last(hi.x, width));
     let (y0, y1) = (first(lo.y, height), last(hi.y, height));
     if x0 >= x1 || y0 >= y1 {

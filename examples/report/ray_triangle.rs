@@ -1,6 +1,8 @@
 //! ray_triangle: where a ray first meets a triangle (`t >= 0`), for the
-//! crate's three variants beside a textbook Möller–Trumbore and parry3d's
-//! triangle cast.
+//! crate's three variants (`exactray-mt`, `exactray-watertight`,
+//! `exactray-exact`; `exactray` is the default, the watertight one, which
+//! `RayCast` uses) beside a textbook Möller–Trumbore (`naive`) and
+//! parry3d's triangle cast.
 //!
 //! Inputs (see `tests/common/ray_cases.rs`): `uniform` (ordinary rays, about
 //! a third hit), `far` (origins 10^6 to 10^12 away), `near-edge` (aimed at an
