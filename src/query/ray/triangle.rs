@@ -203,9 +203,10 @@ impl Triangle {
     ///
     /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`, from the two
     /// determinants evaluated exactly in integers, each rounded to `f64`,
-    /// then divided: three roundings. (An `f64` evaluation with an error
-    /// bound cannot certify 4 units: the bound of the numerator alone is 5
-    /// units times its condition number, which is at least 1.)
+    /// then divided: three roundings. (The plain `f64` formula's forward
+    /// error bound cannot certify 4 units: the bound of the numerator
+    /// `(v0 - o) . ((v1 - v0) x (v2 - v0))` alone is 5 units times its
+    /// condition number, which is at least 1.)
     /// Its sign is always exact (a `t` that would round to zero from a
     /// non-zero value is the smallest subnormal of that sign), so the
     /// bound `t >= 0` of [`Interval::FORWARD`] is decided exactly; other
