@@ -175,16 +175,7 @@ impl Triangle {
         if self.degenerate {
             return None;
         }
-        // The axis of the direction's largest coordinate, without branches
-        // (it is as random as the rays); then one branch to its function.
-        let a = ray.direction().abs();
-        let x_big = (a.x >= a.y) & (a.x >= a.z);
-        let y_big = !x_big & (a.y >= a.z);
-        match 2 - 2 * x_big as usize - y_big as usize {
-            0 => watertight::<0>(self, ray, range),
-            1 => watertight::<1>(self, ray, range),
-            _ => watertight::<2>(self, ray, range),
-        }
+        Shear::of(ray).cast(self, range)
     }
 
     /// Exact: hit or miss decided by exact signs on the original
@@ -306,8 +297,23 @@ impl Triangle {
     }
 }
 
-/// `p`'s coordinates in the order `kx, ky, kz` for `kz = K` (the others
-/// follow cyclically).
+/// A ray prepared for the watertight test: its origin, and its direction
+/// scaled by a power of two and permuted so that its largest coordinate
+/// comes last.
+#[derive(Clone, Copy, Debug)]
+struct Shear {
+    origin: DVec3,
+    /// The axis of the direction's largest coordinate, `kz`; the others
+    /// follow cyclically (`kx = kz + 1`, `ky = kz + 2`, modulo 3).
+    kz: usize,
+    /// `d_kx, d_ky, d_kz` of the scaled direction, `|d_kz|` in `[1, 2)`
+    /// unless the direction is subnormal or huge.
+    d: [f64; 3],
+    /// The power of two the direction was multiplied by.
+    scale: f64,
+}
+
+/// `p`'s coordinates in the order `kx, ky, kz` for `kz = K`.
 #[inline(always)]
 fn permute<const K: usize>(p: DVec3) -> [f64; 3] {
     match K {
@@ -317,33 +323,66 @@ fn permute<const K: usize>(p: DVec3) -> [f64; 3] {
     }
 }
 
-/// The watertight test with the direction's largest coordinate on axis
-/// `K`: the direction permuted and scaled by a power of two so that
-/// `|d_kz|` lies in `[1, 2)` (unless it is subnormal or huge), each vertex
-/// moved to the origin, permuted and sheared, then [`sheared_hit`]. One
-/// function per axis, so that the only branch on the ray's direction is
-/// the caller's choice of `K`.
-#[inline(always)]
-fn watertight<const K: usize>(tri: &Triangle, ray: &Ray, range: Interval) -> Option<TriangleHit> {
-    let d = permute::<K>(ray.direction());
-    // `2^-e` for `|d_kz|` in `[2^e, 2^(e+1))`, from the exponent bits,
-    // clamped so that it is a normal number.
-    let biased = ((d[2].to_bits() >> 52) & 0x7ff).clamp(1, 2045);
-    let scale = f64::from_bits((2046 - biased) << 52);
-    let [dx, dy, dz] = d.map(|x| x * scale);
-    let o = ray.origin();
-    // Each vertex on its own: `(d_kz p_kx - d_kx p_kz, d_kz p_ky - d_ky
-    // p_kz, p_kz)` relative to the origin, the shear of Woop et al.
-    // multiplied through by `d_kz`.
-    let v = tri.v.map(|p| {
-        let [x, y, z] = permute::<K>(p - o);
+impl Shear {
+    #[inline(always)]
+    fn of(ray: &Ray) -> Shear {
+        let d = ray.direction();
+        let a = d.abs();
+        let kz = if a.x >= a.y {
+            if a.x >= a.z { 0 } else { 2 }
+        } else if a.y >= a.z {
+            1
+        } else {
+            2
+        };
+        let p = match kz {
+            0 => permute::<0>(d),
+            1 => permute::<1>(d),
+            _ => permute::<2>(d),
+        };
+        // `2^-e` for `|d_kz|` in `[2^e, 2^(e+1))`, from the exponent bits,
+        // clamped so that it is a normal number.
+        let biased = ((p[2].to_bits() >> 52) & 0x7ff).clamp(1, 2045);
+        let scale = f64::from_bits((2046 - biased) << 52);
+        Shear {
+            origin: ray.origin(),
+            kz,
+            d: p.map(|x| x * scale),
+            scale,
+        }
+    }
+
+    #[inline(always)]
+    fn cast(&self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
+        match self.kz {
+            0 => self.cast_permuted::<0>(tri, range),
+            1 => self.cast_permuted::<1>(tri, range),
+            _ => self.cast_permuted::<2>(tri, range),
+        }
+    }
+
+    /// The vertex `p` relative to the origin, sheared and multiplied by
+    /// `d_kz`: `(d_kz p_kx - d_kx p_kz, d_kz p_ky - d_ky p_kz, p_kz)`.
+    #[inline(always)]
+    fn vertex<const K: usize>(&self, p: DVec3) -> [f64; 3] {
+        let [x, y, z] = permute::<K>(p - self.origin);
+        let [dx, dy, dz] = self.d;
         [dz * x - dx * z, dz * y - dy * z, z]
-    });
-    sheared_hit(v, dz, scale, range)
+    }
+
+    #[inline(always)]
+    fn cast_permuted<const K: usize>(
+        &self,
+        tri: &Triangle,
+        range: Interval,
+    ) -> Option<TriangleHit> {
+        let v = tri.v.map(|p| self.vertex::<K>(p));
+        sheared_hit(v, self.d[2], self.scale, range)
+    }
 }
 
 /// The watertight test on the sheared vertices `(x, y, z)` (see
-/// [`watertight`]), for a direction scaled by `scale` whose largest
+/// [`Shear::vertex`]), for a direction scaled by `scale` whose largest
 /// coordinate is `dz`.
 #[inline(always)]
 fn sheared_hit(
