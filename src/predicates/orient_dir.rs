@@ -24,10 +24,12 @@ const SMALL_SPAN: i32 = 61;
 /// NaN or infinite coordinate).
 ///
 /// For a ray `o + t d` and a triangle edge `p -> q`, it is positive when
-/// the edge passes the ray's line counterclockwise as seen looking along
-/// `d`, and zero when the line meets the edge's line (or is parallel to
-/// it): the three signs for the edges `v1 v2`, `v2 v0`, `v0 v1` are the
-/// barycentric coordinates' signs of the line's crossing of the plane.
+/// the edge turns counterclockwise about the ray's line as seen from ahead
+/// of the ray (looking back along `-d`), and zero when the line meets the
+/// edge's line (or is parallel to it): the three signs for the edges
+/// `v1 v2`, `v2 v0`, `v0 v1` are the signs of the barycentric coordinates
+/// of the line's crossing of the plane, times the sign of `det[d, v1 - v0,
+/// v2 - v0]`.
 #[inline]
 pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
     // det[d, p - o, q - o] = det[d, p - o, q - p]: a row as long as the
@@ -107,9 +109,9 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
 /// The parameter `t` where the line `o + t d` meets the plane of `v0, v1,
 /// v2`: `det[v0 - o, e1, e2] / det[d, e1, e2]` with `e1 = v1 - v0`, `e2 =
 /// v2 - v0`, both determinants exact (in integers), each rounded to 53
-/// bits, then divided: the relative error is below `3 * 2^-53` (three
-/// roundings) when the result is a normal number, and below `2^-1073`
-/// absolutely when it is subnormal. A result that would round to zero is
+/// bits (within `2^-53 (1 + 2^-11)`), then divided: the relative error is
+/// below `4 * 2^-53` when the result is a normal number, and below
+/// `2^-1073` absolutely when it is subnormal. A result that would round to zero is
 /// the smallest subnormal of the exact sign instead, so the sign is always
 /// exact. `NaN` when the line is parallel to the plane (or the triangle
 /// degenerate), or for non-finite input.
