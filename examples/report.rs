@@ -46,6 +46,10 @@ mod orient2d;
 mod orient3d;
 #[path = "report/plane_side.rs"]
 mod plane_side;
+#[path = "report/raster_triangle.rs"]
+mod raster_triangle;
+#[path = "../tests/common/ray_cases.rs"]
+mod ray_cases;
 #[path = "report/ray_cone.rs"]
 mod ray_cone;
 #[path = "report/ray_cylinder.rs"]
@@ -54,6 +58,8 @@ mod ray_cylinder;
 mod ray_quadric;
 #[path = "report/ray_sphere.rs"]
 mod ray_sphere;
+#[path = "report/ray_triangle.rs"]
+mod ray_triangle;
 
 use framework::{Config, Row};
 use std::time::Instant;
@@ -74,6 +80,8 @@ const FAMILIES: &[(&str, Family)] = &[
     ("ray_cylinder", |cfg| ray_cylinder::family().run(cfg)),
     ("ray_cone", |cfg| ray_cone::family().run(cfg)),
     ("ray_quadric", |cfg| ray_quadric::family().run(cfg)),
+    ("ray_triangle", ray_triangle::run),
+    ("raster_triangle", raster_triangle::run),
 ];
 
 fn main() -> std::io::Result<()> {

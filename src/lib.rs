@@ -37,6 +37,7 @@ pub mod inputs;
 pub mod point;
 pub mod predicates;
 pub mod query;
+pub mod raster;
 pub mod ray;
 pub mod roots;
 pub mod shape;

@@ -19,9 +19,11 @@ use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use common::oracle;
 use exactray::SphereBvh;
 use exactray::bvh::Nearest;
+use exactray::ray::Interval;
 use exactray::ray::Ray;
 use exactray::roots::Roots;
-use exactray::shape::{Cylinder, Quadric, Sphere};
+use exactray::shape::{Cylinder, Quadric, Sphere, Triangle};
+use num_traits::Zero;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -112,8 +114,8 @@ const KINDS: &[Kind] = &[
     Kind {
         name: "ray_triangle",
         min_fields: 16,
-        predicate: None,
-        oracle: None,
+        predicate: Some(PerLine(crate_ray_triangle)),
+        oracle: Some(PerLine(oracle_ray_triangle)),
     },
     Kind {
         name: "nearest",
@@ -355,6 +357,72 @@ fn oracle_ray_quadric(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_line_answer(f, 16, false)?;
     let q = Quadratic::quadric(p3(&v, 0), p3(&v, 1), quadric_coefficients(&v));
     Ok(compare_answers(&want, q.answer()))
+}
+
+// ---------------------------------------------------------------------------
+// Rays against triangles: `o d v0 v1 v2 hit [t]`
+
+/// A ray_triangle line: the 15 inputs, `hit` (0, 1 or 2) and `t` for 1.
+fn parse_ray_triangle(f: &[&str]) -> Result<(Vec<f64>, u8, Option<f64>), String> {
+    let v = f[..15]
+        .iter()
+        .map(|x| parse_f64(x))
+        .collect::<Result<Vec<_>, _>>()?;
+    let hit: u8 = f[15].parse().map_err(|_| format!("bad hit {:?}", f[15]))?;
+    match (hit, f.len()) {
+        (0 | 2, 16) => Ok((v, hit, None)),
+        (1, 17) => Ok((v, hit, Some(parse_f64(f[16])?))),
+        _ => Err(format!("hit {hit} with {} fields", f.len())),
+    }
+}
+
+fn verdict(ok: bool, expected: String, got: String) -> Verdict {
+    if ok {
+        Verdict::Pass
+    } else {
+        Verdict::Mismatch { expected, got }
+    }
+}
+
+/// The exact cast must agree with CGAL's do_intersect (coplanar `hit=2`
+/// may go either way) and give `t` within 4 ulps of the correctly rounded
+/// parameter.
+fn crate_ray_triangle(f: &[&str]) -> Result<Verdict, String> {
+    let (v, hit, t) = parse_ray_triangle(f)?;
+    let tri = Triangle::new(p3(&v, 2), p3(&v, 3), p3(&v, 4)).map_err(|e| e.to_string())?;
+    let got = tri.cast_exact(&ray_of(&v)?, Interval::FORWARD).map(|h| h.t);
+    let ok = match (hit, got, t) {
+        (0, None, _) | (2, _, _) => true,
+        (1, Some(g), Some(w)) => ulps_between(g, w) <= ROOT_ULPS,
+        _ => false,
+    };
+    Ok(verdict(
+        ok,
+        format!("hit {hit} t {t:?}"),
+        format!("{got:?}"),
+    ))
+}
+
+/// The num-bigint oracle against CGAL: a crossing at exactly the fixture's
+/// (correctly rounded) parameter for `hit=1`, none with `t >= 0` for
+/// `hit=0`, a coplanar line or a degenerate triangle for `hit=2`.
+fn oracle_ray_triangle(f: &[&str]) -> Result<Verdict, String> {
+    let (v, hit, t) = parse_ray_triangle(f)?;
+    let l = oracle::line_triangle(p3(&v, 0), p3(&v, 1), [p3(&v, 2), p3(&v, 3), p3(&v, 4)]);
+    let crossing = l.t.as_ref().filter(|(_, den)| !den.is_zero());
+    let forward = crossing.filter(|(num, den)| oracle::ratio_in(num, den, 0.0, f64::INFINITY));
+    let degenerate = l.t.as_ref().is_some_and(|(_, den)| den.is_zero());
+    let ok = match (hit, forward, t) {
+        (0, None, _) => true,
+        (1, Some((num, den)), Some(t)) => oracle::within_units(t, num, den, 1),
+        (2, _, _) => l.coplanar || degenerate || crossing.is_none(),
+        _ => false,
+    };
+    Ok(verdict(
+        ok,
+        format!("hit {hit} t {t:?}"),
+        format!("coplanar {} crossing {}", l.coplanar, forward.is_some()),
+    ))
 }
 
 // ---------------------------------------------------------------------------

@@ -40,7 +40,9 @@ fuzz_target!(|input: (u8, [u64; 16])| {
         }
         1 => {
             let (p, a, r) = ([v[6], v[7], v[8]], [v[9], v[10], v[11]], v[12].abs());
-            let Ok(cyl) = Cylinder::new(p, a, r) else { return };
+            let Ok(cyl) = Cylinder::new(p, a, r) else {
+                return;
+            };
             (cyl.line_roots(&ray), Quadratic::cylinder(o, d, p, a, r))
         }
         _ => {
@@ -50,7 +52,11 @@ fuzz_target!(|input: (u8, [u64; 16])| {
         }
     };
     let want = want.answer();
-    assert_eq!(got.count(), want.count, "{v:?} mode {mode}: {got:?} vs {want:?}");
+    assert_eq!(
+        got.count(),
+        want.count,
+        "{v:?} mode {mode}: {got:?} vs {want:?}"
+    );
     let roots = match got {
         Roots::One(t) => vec![t],
         Roots::Two(t0, t1) => {
@@ -64,7 +70,10 @@ fuzz_target!(|input: (u8, [u64; 16])| {
     for (t, w) in roots.into_iter().zip(want.roots) {
         let normal = w == 0.0 || (2f64.powi(-1000)..2f64.powi(1000)).contains(&w.abs());
         if normal {
-            assert!(ulps_between(t, w) <= 5, "{v:?} mode {mode}: root {t:e} vs {w:e}");
+            assert!(
+                ulps_between(t, w) <= 5,
+                "{v:?} mode {mode}: root {t:e} vs {w:e}"
+            );
         }
     }
 });

@@ -79,6 +79,7 @@ mod incircle;
 mod insphere;
 mod orient2d;
 mod orient3d;
+pub(crate) mod orient_dir;
 pub mod plane_side;
 mod sparse;
 pub(crate) mod wide;

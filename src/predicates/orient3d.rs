@@ -87,7 +87,16 @@ fn stage_a(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> (f64, f6
 #[inline(always)]
 pub(super) fn stage_a_lanes<T: Lanes>(a: [T; 3], b: [T; 3], c: [T; 3], d: [T; 3]) -> (T, T, T, T) {
     let rel = |p: [T; 3]| [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
-    let (bb, cc, dd) = (rel(b), rel(c), rel(d));
+    stage_a_rows(rel(b), rel(c), rel(d))
+}
+
+/// [`stage_a_lanes`] from the three rows of the determinant, each a
+/// rounded difference of input coordinates or an input vector itself: the
+/// bound `A` accounts for one rounding in every row entry, so a row that is
+/// exact (a ray's direction) only leaves it less to cover. Underflow in a
+/// difference is exact, so the slack terms hold for either kind of row.
+#[inline(always)]
+pub(super) fn stage_a_rows<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> (T, T, T, T) {
     let cxdy = cc[0] * dd[1];
     let dxcy = dd[0] * cc[1];
     let dxby = dd[0] * bb[1];
@@ -180,8 +189,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
 }
 
 /// Stage 2: each axis as integers at its finest bit, in native integers
-/// (see `SMALL_SPAN`): differences in `i64`, minors in `i128`, and the
-/// 189-bit determinant as an `i128` high part and a `u64` low part.
+/// (see `SMALL_SPAN`).
 fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
     let int = |v: DVec3| {
         [
@@ -195,7 +203,13 @@ fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
         let q = int(v);
         [q[0] - a[0], q[1] - a[1], q[2] - a[2]]
     };
-    let (b, c, d) = (rel(p[1]), rel(p[2]), rel(p[3]));
+    small_det3([rel(p[1]), rel(p[2]), rel(p[3])])
+}
+
+/// The sign of `det[b, c, d]` for integer rows below `2^62` in magnitude:
+/// minors in `i128`, and the 189-bit determinant as an `i128` high part and
+/// a `u64` low part.
+pub(super) fn small_det3([b, c, d]: [[i64; 3]; 3]) -> Sign {
     let minor =
         |u: [i64; 3], v: [i64; 3]| u[0] as i128 * v[1] as i128 - v[0] as i128 * u[1] as i128;
     // det = sum z * m with |z| < 2^62, |m| < 2^125. Write m = hi 2^64 + lo
@@ -243,12 +257,19 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
         let q = int(v);
         [q[0].sub(&a[0]), q[1].sub(&a[1]), q[2].sub(&a[2])]
     };
-    let (b, c, d) = (rel(p[1]), rel(p[2]), rel(p[3]));
+    det3_wide::<D, M, R>(&[rel(p[1]), rel(p[2]), rel(p[3])]).sign()
+}
+
+/// `det[b, c, d]` of integer rows in `D`-limb integers, with `M`-limb
+/// minors and an `R`-limb result; the caller picks the sizes from a bound
+/// on the rows.
+pub(super) fn det3_wide<const D: usize, const M: usize, const R: usize>(
+    [b, c, d]: &[[Wide<D>; 3]; 3],
+) -> Wide<R> {
     let minor = |u: &[Wide<D>; 3], v: &[Wide<D>; 3]| {
         Wide::<M>::mul(&u[0], &v[1]).sub(&Wide::<M>::mul(&v[0], &u[1]))
     };
-    let det = Wide::<R>::mul(&b[2], &minor(&c, &d))
-        .add(&Wide::<R>::mul(&c[2], &minor(&d, &b)))
-        .add(&Wide::<R>::mul(&d[2], &minor(&b, &c)));
-    det.sign()
+    Wide::<R>::mul(&b[2], &minor(c, d))
+        .add(&Wide::<R>::mul(&c[2], &minor(d, b)))
+        .add(&Wide::<R>::mul(&d[2], &minor(b, c)))
 }

@@ -259,7 +259,21 @@ pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
 /// when the terms do not fit the accumulators.
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Option<Sign> {
     let rel = |p: DVec3| [diff(p.x, a.x), diff(p.y, a.y), diff(p.z, a.z)];
-    let (b, c, d) = (rel(b), rel(c), rel(d));
+    det3(rel(b), rel(c), rel(d))
+}
+
+/// The exact sign of `det[d, p - o, q - o]` for finite input (a ray's
+/// direction `d` and two points seen from its origin `o`), or `None` when
+/// the terms do not fit the accumulators.
+pub(super) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Option<Sign> {
+    let rel = |p: DVec3| [diff(p.x, o.x), diff(p.y, o.y), diff(p.z, o.z)];
+    // `d - 0` is the one exact term `d` (a zero difference has none).
+    let dir = [diff(d.x, 0.0), diff(d.y, 0.0), diff(d.z, 0.0)];
+    det3(dir, rel(p), rel(q))
+}
+
+/// The exact sign of `det[b, c, d]` for rows of exact differences.
+fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
     let mut terms = Terms::<MAX_TERMS>::new();
     // Expanded along z: z_u * (x_v y_w - x_w y_v) over (u, v, w) cyclic.
     for (u, v, w) in [(b, c, d), (c, d, b), (d, b, c)] {

@@ -76,30 +76,49 @@ impl<const N: usize> Wide<N> {
         }
     }
 
-    /// The value times `2^lo`, correctly rounded to 53 significant bits:
-    /// the top 64 bits of the magnitude with a sticky bit for the rest
-    /// convert to `f64` with one correct rounding.
-    pub(crate) fn as_extended(&self, lo: i32) -> Extended {
-        let (mag, len, neg) = self.magnitude();
+    /// The value rounded to 53 significant bits (to nearest, ties to even),
+    /// as `(m, e)` with `value ~ m * 2^e`: `m` is an `f64` integer below
+    /// `2^64` in magnitude (`0.0` for zero), so that values far beyond the
+    /// range of `f64` keep their exponent.
+    #[inline]
+    pub(crate) fn rounded_parts(&self) -> (f64, i32) {
+        let (limbs, len, neg) = self.magnitude();
         if len == 0 {
-            return Extended::ZERO;
+            return (0.0, 0);
         }
-        let hi = mag[len - 1];
-        let lz = hi.leading_zeros();
-        let below = if len >= 2 { mag[len - 2] } else { 0 };
-        let mut top = if lz == 0 {
-            hi
+        // The top 64 bits, with the bits below them folded into a sticky
+        // last bit: that bit lies 11 places below where the conversion
+        // rounds, so it decides only ties and their side, as the full value
+        // would.
+        let top = len - 1;
+        let shift = limbs[top].leading_zeros();
+        let (word, sticky_from, e) = if top == 0 {
+            (limbs[0], 0, 0)
         } else {
-            hi << lz | below >> (64 - lz)
+            let below = limbs[top - 1];
+            let word = if shift == 0 {
+                limbs[top]
+            } else {
+                limbs[top] << shift | below >> (64 - shift)
+            };
+            let lost = if shift == 0 {
+                below != 0
+            } else {
+                below << shift != 0
+            };
+            let rest = limbs[..top - 1].iter().any(|&l| l != 0);
+            (word, (lost || rest) as u64, 64 * top as i32 - shift as i32)
         };
-        let rest_nonzero = (lz > 0 && below << lz != 0)
-            || (lz == 0 && below != 0)
-            || mag[..len.saturating_sub(2)].iter().any(|&l| l != 0);
-        top |= rest_nonzero as u64;
-        // The integer has 64 (len - 1) + 64 - lz bits; `top` holds the top 64.
-        let e = 64 * (len as i32 - 1) - lz as i32 + lo;
-        let m = top as f64;
-        Extended::new(if neg { -m } else { m }, e)
+        let m = (word | sticky_from) as f64;
+        (if neg { -m } else { m }, e)
+    }
+
+    /// The value times `2^lo`, correctly rounded to 53 significant bits,
+    /// with an unbounded exponent.
+    #[inline]
+    pub(crate) fn as_extended(&self, lo: i32) -> Extended {
+        let (m, e) = self.rounded_parts();
+        Extended::new(m, e.saturating_add(lo))
     }
 
     /// `-self` (wrapping).

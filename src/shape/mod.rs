@@ -9,12 +9,14 @@ mod cylinder;
 mod plane;
 mod quadric;
 mod sphere;
+pub mod triangle;
 
 pub use cone::Cone;
 pub use cylinder::{CappedCylinder, Cylinder};
 pub use plane::{Disk, Plane};
 pub use quadric::Quadric;
 pub use sphere::Sphere;
+pub use triangle::Triangle;
 
 use crate::error::InputError;
 use crate::point::IntoDVec3;

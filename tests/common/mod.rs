@@ -1,2 +1,3 @@
 pub mod line_oracle;
 pub mod oracle;
+pub mod ray_cases;

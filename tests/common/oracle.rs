@@ -339,6 +339,151 @@ pub fn quadratic_root_near(a: f64, b: f64, c: f64, t: f64, k: i64) -> bool {
     slope(lo) * slope(hi) <= 0 && discriminant_sign(a, b, c) >= 0
 }
 
+/// The exact meeting of the line `o + t d` with the closed triangle `v`:
+/// `None` when the line misses it, or lies in its plane (`coplanar`);
+/// otherwise the parameter `t = num / den` (`den > 0`) of the crossing.
+pub struct LineTriangle {
+    /// The line lies in the triangle's plane (the three signs are zero).
+    pub coplanar: bool,
+    /// `(num, den)` of the crossing's parameter, when the line meets the
+    /// triangle off its plane.
+    pub t: Option<(BigInt, BigInt)>,
+    /// The line meets the triangle's front: `det[d, v1 - v0, v2 - v0] < 0`,
+    /// the direction against the normal of the counterclockwise order.
+    pub front: bool,
+}
+
+/// The signs of `det[d, v_j - o, v_k - o]` over the edges `(1, 2), (2, 0),
+/// (0, 1)` decide whether the line crosses the triangle (all `>= 0` or all
+/// `<= 0`, not all zero); `t = det[v0 - o, v1 - v0, v2 - v0] / det[d, v1 -
+/// v0, v2 - v0]`. All in integers at the values' common exponent, which
+/// scales both determinants by the same power of two.
+pub fn line_triangle(o: [f64; 3], d: [f64; 3], v: [[f64; 3]; 3]) -> LineTriangle {
+    let all = common_integers(&[o, d, v[0], v[1], v[2]].concat());
+    let p = |i: usize| -> [BigInt; 3] { core::array::from_fn(|k| all[3 * i + k].clone()) };
+    let sub = |a: &[BigInt; 3], b: &[BigInt; 3]| -> [BigInt; 3] {
+        core::array::from_fn(|k| &a[k] - &b[k])
+    };
+    let (oi, di) = (p(0), p(1));
+    let vi = [p(2), p(3), p(4)];
+    let a = [sub(&vi[0], &oi), sub(&vi[1], &oi), sub(&vi[2], &oi)];
+    let w = [(1, 2), (2, 0), (0, 1)]
+        .map(|(j, k)| sign(&det3(&[di.clone(), a[j].clone(), a[k].clone()])));
+    let coplanar = w == [0, 0, 0];
+    let crosses = !coplanar && (w.iter().all(|&s| s >= 0) || w.iter().all(|&s| s <= 0));
+    if !crosses {
+        return LineTriangle {
+            coplanar,
+            t: None,
+            front: false,
+        };
+    }
+    let (e1, e2) = (sub(&vi[1], &vi[0]), sub(&vi[2], &vi[0]));
+    let num = det3(&[a[0].clone(), e1.clone(), e2.clone()]);
+    let den = det3(&[di, e1, e2]);
+    let front = den.is_negative();
+    let t = if front { (-num, -den) } else { (num, den) };
+    LineTriangle {
+        coplanar,
+        t: Some(t),
+        front,
+    }
+}
+
+/// The exact ordering of `num / den` (`den > 0`) against the finite `x`.
+pub fn cmp_ratio(num: &BigInt, den: &BigInt, x: f64) -> core::cmp::Ordering {
+    let (m, e) = exact_parts(x);
+    // num / den against m 2^e: num 2^-e against m den, shifted to integers.
+    if e >= 0 {
+        num.cmp(&((m * den) << e as usize))
+    } else {
+        (num << (-e) as usize).cmp(&(m * den))
+    }
+}
+
+/// Whether `num / den` (`den > 0`) lies in `[min, max]` (infinite bounds
+/// allowed).
+pub fn ratio_in(num: &BigInt, den: &BigInt, min: f64, max: f64) -> bool {
+    use core::cmp::Ordering::*;
+    let above = min == f64::NEG_INFINITY || cmp_ratio(num, den, min) != Less;
+    let below = max == f64::INFINITY || cmp_ratio(num, den, max) != Greater;
+    above && below
+}
+
+/// Whether `|t - num / den| <= k 2^-53 |num / den|` (`den > 0`), exactly:
+/// `|t den - num| 2^53 <= k |num|`.
+pub fn within_units(t: f64, num: &BigInt, den: &BigInt, k: u32) -> bool {
+    let (m, e) = exact_parts(t);
+    // t den - num at the scale 2^min(e, 0).
+    let (lhs, rhs) = if e >= 0 {
+        ((m * den) << e as usize, num.clone())
+    } else {
+        (m * den, num << (-e) as usize)
+    };
+    let diff = (lhs - &rhs).abs() << 53usize;
+    diff <= rhs.abs() * BigInt::from(k)
+}
+
+/// `num / den` (`den > 0`) rounded to the nearest `f64` (ties to even), for
+/// results in the normal range; in the subnormal range the result is
+/// within one subnormal step.
+pub fn ratio_to_f64(num: &BigInt, den: &BigInt) -> f64 {
+    if num.is_zero() {
+        return 0.0;
+    }
+    let neg = num.is_negative();
+    let n = num.abs();
+    // A quotient of 64 to 65 bits, with a sticky bit for the remainder.
+    let shift = 64 + den.bits() as i64 - n.bits() as i64;
+    let (scaled_n, scaled_d) = if shift >= 0 {
+        (n << shift as usize, den.clone())
+    } else {
+        (n, den << (-shift) as usize)
+    };
+    let q = &scaled_n / &scaled_d;
+    let sticky = !(&scaled_n - &q * &scaled_d).is_zero();
+    let (_, digits) = q.to_u64_digits();
+    let mut value: u128 = digits
+        .iter()
+        .rev()
+        .fold(0u128, |acc, &d| (acc << 64) | d as u128);
+    // Keep 64 significant bits; fold lost bits into the sticky bit.
+    let bits = 128 - value.leading_zeros() as i64;
+    let mut exp = -shift;
+    let mut lost = sticky;
+    if bits > 64 {
+        let drop = bits - 64;
+        lost |= value & ((1u128 << drop) - 1) != 0;
+        value >>= drop;
+        exp += drop;
+    }
+    let v = ((value as u64) | lost as u64) as f64;
+    let r = scale2(v, exp);
+    if neg { -r } else { r }
+}
+
+/// `v 2^k`, stepping so that no intermediate result overflows early.
+fn scale2(mut v: f64, mut k: i64) -> f64 {
+    while k > 1000 {
+        v *= 2f64.powi(1000);
+        k -= 1000;
+    }
+    while k < -1000 {
+        v *= 2f64.powi(-1000);
+        k += 1000;
+    }
+    v * 2f64.powi(k as i32)
+}
+
+/// The number of `f64` steps between `a` and `b` (both finite).
+pub fn ulps_between(a: f64, b: f64) -> u64 {
+    let ordered = |x: f64| {
+        let bits = x.to_bits() as i64;
+        if bits < 0 { i64::MIN - bits } else { bits }
+    };
+    (ordered(a) as i128 - ordered(b) as i128).unsigned_abs() as u64
+}
+
 #[cfg(test)]
 mod oracle_self_test {
     use super::*;

@@ -7,6 +7,10 @@
 use crate::ray::{Interval, Ray};
 use glam::DVec3;
 
+pub mod triangle;
+
+pub use triangle::TriangleHit;
+
 /// Where a ray meets a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {

@@ -1,0 +1,108 @@
+//! The exact ray–triangle cast against exact rational arithmetic, on
+//! fuzzer-chosen coordinates: its hit or miss must equal the exact one (for
+//! `t >= 0` and for the whole line), and its `t` must lie within
+//! `EXACT_T_ULPS` units of rounding of the exact parameter (or overflow
+//! only where the exact one exceeds the largest `f64`). The fast variants
+//! must never panic and must report only `t` inside the interval.
+//!
+//! The first byte picks how the case is built: raw bit patterns (every
+//! finite value), or a generated case (ordinary, far, near an edge,
+//! grazing) edited towards degeneracy: the ray aimed at a vertex or along
+//! an edge, two vertices merged, every coordinate scaled by a power of two.
+#![no_main]
+
+use arbitrary::{Arbitrary, Unstructured};
+use exactray::hard_inputs::SplitMix64;
+use exactray::inputs::finite_f64_from_bits;
+use exactray::query::ray::triangle::EXACT_T_ULPS;
+use exactray::ray::{Interval, Ray};
+use exactray::shape::Triangle;
+use glam::DVec3;
+use libfuzzer_sys::fuzz_target;
+
+#[path = "../../tests/common/oracle.rs"]
+mod oracle;
+#[path = "../../tests/common/ray_cases.rs"]
+mod ray_cases;
+
+fn vec3(u: &mut Unstructured) -> arbitrary::Result<DVec3> {
+    let b = <[u64; 3]>::arbitrary(u)?;
+    Ok(DVec3::from_array(b.map(finite_f64_from_bits)))
+}
+
+fn case(u: &mut Unstructured) -> arbitrary::Result<ray_cases::Case> {
+    let how = u8::arbitrary(u)?;
+    if how % 2 == 0 {
+        return Ok((vec3(u)?, vec3(u)?, [vec3(u)?, vec3(u)?, vec3(u)?]));
+    }
+    let mut rng = SplitMix64::new(u64::arbitrary(u)?);
+    let (mut o, mut d, mut v) = match (how / 2) % 4 {
+        0 => ray_cases::uniform(&mut rng),
+        1 => ray_cases::far(&mut rng),
+        2 => ray_cases::near_edge(&mut rng),
+        _ => ray_cases::grazing(&mut rng),
+    };
+    let k = (how / 8 % 3) as usize;
+    match u8::arbitrary(u)? % 5 {
+        0 => d = v[k] - o,
+        1 => (o, d) = (v[k], v[(k + 1) % 3] - v[k]),
+        2 => v[(k + 1) % 3] = v[k],
+        3 => o = v[k] + (v[k] - v[(k + 2) % 3]),
+        _ => {}
+    }
+    let scale = 2f64.powi(i32::from(i8::arbitrary(u)?) * 8);
+    Ok((o * scale, d * scale, v.map(|p| p * scale)))
+}
+
+fn check(o: DVec3, d: DVec3, v: [DVec3; 3], range: Interval) {
+    let (Ok(ray), Ok(tri)) = (Ray::new(o, d), Triangle::new(v[0], v[1], v[2])) else {
+        return;
+    };
+    for hit in [tri.cast_mt(&ray, range), tri.cast_watertight(&ray, range)]
+        .into_iter()
+        .flatten()
+    {
+        assert!(range.contains(hit.t), "{hit:?} outside {range:?}");
+    }
+    let got = tri.cast_exact(&ray, range);
+    let line = oracle::line_triangle(o.to_array(), d.to_array(), v.map(|p| p.to_array()));
+    let want = line
+        .t
+        .filter(|(num, den)| oracle::ratio_in(num, den, range.min(), range.max()));
+    assert_eq!(
+        got.is_some(),
+        want.is_some(),
+        "{o:?} {d:?} {v:?} {range:?}: {got:?}"
+    );
+    if let (Some(hit), Some((num, den))) = (got, want) {
+        if hit.t.is_infinite() {
+            assert!(
+                !oracle::ratio_in(&num, &den, -f64::MAX, f64::MAX),
+                "{o:?} {d:?} {v:?}"
+            );
+        } else {
+            assert!(
+                hit.t.abs() < f64::MIN_POSITIVE
+                    || oracle::within_units(hit.t, &num, &den, EXACT_T_ULPS as u32),
+                "{o:?} {d:?} {v:?}: t = {:e}, exact {:e}",
+                hit.t,
+                oracle::ratio_to_f64(&num, &den)
+            );
+        }
+        assert!((0.0..=1.0).contains(&hit.u) && (0.0..=1.0).contains(&hit.v));
+    }
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut u = Unstructured::new(data);
+    let Ok((o, d, v)) = case(&mut u) else {
+        return;
+    };
+    check(o, d, v, Interval::FORWARD);
+    check(
+        o,
+        d,
+        v,
+        Interval::new(f64::NEG_INFINITY, f64::INFINITY).expect("valid"),
+    );
+});

@@ -1,0 +1,457 @@
+//! Ray–triangle intersection in three variants, each returning the ray
+//! parameter `t` and the barycentric coordinates of the hit:
+//!
+//! | variant | on a shared edge or vertex | `t` | cost |
+//! |---|---|---|---|
+//! | [`Triangle::cast_mt`] (Möller–Trumbore) | may miss on both sides | rounded formula | the reference |
+//! | [`Triangle::cast_watertight`] (Woop, Benthin, Wald) | never missed on both sides | rounded formula | about the same |
+//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | a little more |
+//!
+//! Every variant takes a parameter [`Interval`] and reports the hit only
+//! when its `t` lies in it. A degenerate triangle (collinear vertices,
+//! decided exactly when it is built) is always a miss. A ray whose line
+//! lies in the triangle's plane (a coplanar ray) or runs parallel to it is
+//! always a miss for the exact variant, and for the others wherever their
+//! rounded determinant comes out zero (see each).
+//!
+//! The barycentric coordinates `u` (of `v1`) and `v` (of `v2`) place the
+//! hit at `(1 - u - v) v0 + u v1 + v v2` ([`TriangleHit::point`]).
+//!
+//! References: T. Möller and B. Trumbore, "Fast, Minimum Storage
+//! Ray/Triangle Intersection", Journal of Graphics Tools 2(1), 1997;
+//! S. Woop, C. Benthin and I. Wald, "Watertight Ray/Triangle
+//! Intersection", Journal of Computer Graphics Techniques 2(1), 2013.
+
+use super::{Hit, RayCast};
+use crate::predicates::orient_dir::{orient_dir, plane_parameter};
+use crate::ray::{Interval, Ray};
+use crate::shape::Triangle;
+use crate::sign::Sign;
+use glam::DVec3;
+
+/// Where a ray meets a triangle: the ray parameter and the barycentric
+/// coordinates of the hit point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleHit {
+    /// The ray parameter: the hit is at `origin + t * direction`.
+    pub t: f64,
+    /// The barycentric coordinate of `v1`, in `[0, 1]`.
+    pub u: f64,
+    /// The barycentric coordinate of `v2`, in `[0, 1]`; `u + v <= 1` up to
+    /// rounding.
+    pub v: f64,
+}
+
+impl TriangleHit {
+    /// The hit point from the barycentric coordinates, `(1 - u - v) v0 +
+    /// u v1 + v v2` (rounded); it lies in the triangle up to rounding,
+    /// where `ray.at(t)` may lie off its plane by the error of `t`.
+    ///
+    /// ```
+    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::shape::Triangle;
+    /// let tri = Triangle::new([0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]).unwrap();
+    /// let ray = Ray::new([1.0, 2.0, 5.0], [0.0, 0.0, -1.0]).unwrap();
+    /// let hit = tri.cast_exact(&ray, Interval::FORWARD).unwrap();
+    /// assert_eq!((hit.t, hit.u, hit.v), (5.0, 0.25, 0.5));
+    /// assert_eq!(hit.point(&tri).to_array(), [1.0, 2.0, 0.0]);
+    /// ```
+    #[inline]
+    pub fn point(&self, triangle: &Triangle) -> DVec3 {
+        let [v0, v1, v2] = triangle.v;
+        v0 * (1.0 - self.u - self.v) + v1 * self.u + v2 * self.v
+    }
+}
+
+/// `2^-53`, the unit roundoff.
+const U: f64 = f64::EPSILON / 2.0;
+
+/// Orient3d's filter constant `(7 + 56 u) u`, here for `det[d, a_j, e_jk]`
+/// whose rows are the direction and two rounded differences, times the six
+/// products the permanent is bounded by (`6 D M E` for `D` the largest
+/// direction coordinate, `M` the largest vertex-to-origin difference and
+/// `E` the largest edge coordinate), with a margin for the rounding of the
+/// bound itself.
+const EDGE_BOUND: f64 = 6.0 * (7.0 + 56.0 * U) * U * (1.0 + 1.0 / (1u64 << 40) as f64);
+
+/// Beyond this magnitude of the direction or of a difference, the filters
+/// decline: below it no product of three overflows (`2^990`), and the
+/// absolute error of underflowed products (below `2^-1073` per unit of a
+/// coordinate, orient3d's slack terms) stays below [`ABS_SLACK`].
+const FILTER_MAX: f64 = crate::predicates::grain::pow2(330);
+
+/// Absolute error bound added to every filter for underflow: orient3d's
+/// slack, `2^-1073 * 3 * 2^330 + 2^-1071`, is below `2^-740`.
+const ABS_SLACK: f64 = crate::predicates::grain::pow2(-700);
+
+/// The exact variant's promise: `|t - t_exact| <= T_ULPS * 2^-53 * |t_exact|`.
+pub const EXACT_T_ULPS: f64 = 4.0;
+
+impl Triangle {
+    /// Möller–Trumbore: the textbook fast test, `t`, `u` and `v` from
+    /// three triple products divided by `det = (v1 - v0) . (d x (v2 - v0))`.
+    ///
+    /// The hit test is on rounded barycentrics: a ray aimed at an edge
+    /// shared by two triangles can miss both (the two triangles compute
+    /// that edge's coordinate from different operands). Coplanar rays and
+    /// rays parallel to the plane give `det == 0` in exact arithmetic; a
+    /// `det` that computes as zero is a miss, one that rounds away from
+    /// zero may give a hit. A degenerate triangle is a miss. No division by
+    /// zero and no NaN reaches the answer: overflowing products fail the
+    /// comparisons and miss.
+    ///
+    /// ```
+    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::shape::Triangle;
+    /// let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    /// let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
+    /// assert_eq!(tri.cast_mt(&ray, Interval::FORWARD).unwrap().t, 1.0);
+    /// ```
+    #[inline]
+    pub fn cast_mt(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
+        if self.degenerate {
+            return None;
+        }
+        let [v0, v1, v2] = self.v;
+        let (o, d) = (ray.origin(), ray.direction());
+        let (e1, e2) = (v1 - v0, v2 - v0);
+        let p = d.cross(e2);
+        let det = e1.dot(p);
+        // NaN: overflowed products.
+        if det == 0.0 || det.is_nan() {
+            return None;
+        }
+        let inv = 1.0 / det;
+        let s = o - v0;
+        let u = s.dot(p) * inv;
+        if !(0.0..=1.0).contains(&u) {
+            return None;
+        }
+        let q = s.cross(e1);
+        let v = d.dot(q) * inv;
+        if !(v >= 0.0 && u + v <= 1.0) {
+            return None;
+        }
+        let t = e2.dot(q) * inv;
+        range.contains(t).then_some(TriangleHit { t, u, v })
+    }
+
+    /// Watertight (Woop, Benthin and Wald 2013): the vertices are moved to
+    /// the ray's origin and sheared so that the ray runs along an axis,
+    /// then tested by 2D edge functions.
+    ///
+    /// Each vertex is sheared on its own, and an edge's function uses only
+    /// its two sheared vertices, computed as `x_q y_p - y_q x_p` with no
+    /// fused operations: the triangle on the other side of a shared edge
+    /// computes exactly the negated value. So a ray through a shared edge
+    /// or vertex of a closed or tiled mesh is never missed by all the
+    /// triangles around it; it may hit two of them (an edge function that
+    /// rounds to zero counts as inside on both sides).
+    ///
+    /// The shear is Woop et al.'s (axis `kz` of the direction's largest
+    /// coordinate, the others sheared by `d_k / d_kz`) multiplied through
+    /// by `d_kz`, after scaling the direction by a power of two so that
+    /// `|d_kz|` lies in `[1, 2)`: no division per vertex and the same
+    /// magnitudes as theirs. The per-vertex rounding that makes it
+    /// watertight also makes it inexact: rays within a few ulps of an edge
+    /// may be classified on the wrong side of it (consistently for both
+    /// triangles). Coplanar and parallel rays give a zero determinant in
+    /// exact arithmetic: a miss where it computes as zero, possibly a hit
+    /// where it rounds away from zero. A degenerate triangle is a miss.
+    ///
+    /// ```
+    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::shape::Triangle;
+    /// // Two triangles sharing the diagonal of the unit square; a ray
+    /// // through a point of the diagonal hits at least one of them.
+    /// let a = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]).unwrap();
+    /// let b = Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    /// let ray = Ray::new([-0.4, 0.1, 1.0], [0.7, 0.2, -1.0]).unwrap();
+    /// let hits = [a, b].into_iter().filter(|t| t.cast_watertight(&ray, Interval::FORWARD).is_some());
+    /// assert!(hits.count() >= 1);
+    /// ```
+    #[inline]
+    pub fn cast_watertight(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
+        if self.degenerate {
+            return None;
+        }
+        Shear::of(ray).cast(self, range)
+    }
+
+    /// Exact: hit or miss decided by exact signs on the original
+    /// coordinates, and `t` within [`EXACT_T_ULPS`] (4) units of rounding
+    /// of the exact parameter: `|t - t_exact| <= 4 * 2^-53 * |t_exact|` for
+    /// a normal `t`, `2^-1073` absolutely for a subnormal one.
+    ///
+    /// With `a_i = v_i - o` the exact differences, the line `o + s d` meets
+    /// the closed triangle exactly when the three signs of `det[d, a_1,
+    /// a_2]`, `det[d, a_2, a_0]`, `det[d, a_0, a_1]` are all `>= 0` or all
+    /// `<= 0`, not all zero (all zero: the line lies in the triangle's plane,
+    /// a miss, or the triangle is degenerate). Edges and vertices belong to
+    /// the triangle: a ray through a shared edge hits both triangles.
+    /// Each sign comes from a floating-point filter, or when the filter
+    /// cannot certify it, from the crate's exact orient3d machinery.
+    ///
+    /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`, from the two
+    /// determinants evaluated exactly in integers, each rounded to `f64`,
+    /// then divided: three roundings. (The plain `f64` formula's forward
+    /// error bound cannot certify 4 units: the bound of the numerator
+    /// `(v0 - o) . ((v1 - v0) x (v2 - v0))` alone is 5 units times its
+    /// condition number, which is at least 1.)
+    /// Its sign is always exact (a `t` that would round to zero from a
+    /// non-zero value is the smallest subnormal of that sign), so the
+    /// bound `t >= 0` of [`Interval::FORWARD`] is decided exactly; other
+    /// finite bounds are compared with the returned `t`, so an exact `t`
+    /// within 4 ulps of a bound may be placed on either side of it.
+    ///
+    /// The barycentric coordinates are rounded quotients of the three
+    /// determinants: exactly zero on the edges the ray meets, in `[0, 1]`.
+    ///
+    /// ```
+    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::shape::Triangle;
+    /// let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    /// // 0.1 + 0.9 rounds to 1, but the doubles 0.1 and 0.9 sum to just
+    /// // above 1: the ray passes outside the hypotenuse x + y = 1.
+    /// let ray = Ray::new([0.1, 0.9, 1.0], [0.0, 0.0, -1.0]).unwrap();
+    /// assert!(tri.cast_exact(&ray, Interval::FORWARD).is_none());
+    /// // 0.25 + 0.75 is exactly 1: on the edge, a hit.
+    /// let ray = Ray::new([0.25, 0.75, 1.0], [0.0, 0.0, -1.0]).unwrap();
+    /// assert!(tri.cast_exact(&ray, Interval::FORWARD).is_some());
+    /// // Edges belong to the triangle; the t of an axis-aligned ray is exact.
+    /// let edge = Ray::new([0.5, 0.0, 2.0], [0.0, 0.0, -1.0]).unwrap();
+    /// assert_eq!(tri.cast_exact(&edge, Interval::FORWARD).unwrap().t, 2.0);
+    /// ```
+    pub fn cast_exact(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
+        let [v0, v1, v2] = self.v;
+        let (o, d) = (ray.origin(), ray.direction());
+        // det[d, a_j, a_k] = det[d, a_j, v_k - v_j]: with the edge as a row,
+        // the rounding of the long rows (a far origin) costs relative to the
+        // edge's length, not to the distance, and the filter certifies far
+        // rays as it does near ones.
+        let a = [v0 - o, v1 - o, v2 - o];
+        let e = [v2 - v1, v0 - v2, v1 - v0];
+        let w = [
+            d.dot(a[1].cross(e[0])),
+            d.dot(a[2].cross(e[1])),
+            d.dot(a[0].cross(e[2])),
+        ];
+        let m = a[0].abs().max(a[1].abs()).max(a[2].abs()).max_element();
+        let em = e[0].abs().max(e[1].abs()).max(e[2].abs()).max_element();
+        let dm = d.abs().max_element();
+        // Certified signs, or `None` where the filter cannot tell.
+        let filtered = if m.max(dm).max(em) <= FILTER_MAX {
+            let bound = EDGE_BOUND * dm * m * em + ABS_SLACK;
+            w.map(|w| {
+                if w > bound {
+                    Some(Sign::Positive)
+                } else if w < -bound {
+                    Some(Sign::Negative)
+                } else {
+                    None
+                }
+            })
+        } else {
+            [None; 3]
+        };
+        // An early miss on two certified opposite signs, before any exact work.
+        let certified = |s: Sign| filtered.contains(&Some(s));
+        if certified(Sign::Positive) && certified(Sign::Negative) {
+            return None;
+        }
+        let sign = |i: usize| {
+            filtered[i]
+                .unwrap_or_else(|| orient_dir(d, o, self.v[(i + 1) % 3], self.v[(i + 2) % 3]))
+        };
+        let s = [sign(0), sign(1), sign(2)];
+        let has = |x: Sign| s.contains(&x);
+        let side = match (has(Sign::Positive), has(Sign::Negative)) {
+            (true, true) | (false, false) => return None,
+            (true, false) => 1.0,
+            (false, true) => -1.0,
+        };
+        let t = plane_parameter(o, d, v0, v1, v2);
+        if !range.contains(t) {
+            return None;
+        }
+        // Barycentrics from the rounded determinants, on the exact side:
+        // zero where the exact sign is, never negative.
+        let wz = [0, 1, 2].map(|i| {
+            if s[i] == Sign::Zero {
+                0.0
+            } else {
+                (w[i] * side).max(0.0)
+            }
+        });
+        let total = wz[0] + wz[1] + wz[2];
+        let (u, v) = if total > 0.0 && total.is_finite() {
+            (wz[1] / total, wz[2] / total)
+        } else {
+            // Every rounded determinant vanished or overflowed while the
+            // exact signs did not: weigh the non-zero ones equally.
+            let nz = s.map(|x| (x != Sign::Zero) as u8 as f64);
+            let k = nz[0] + nz[1] + nz[2];
+            (nz[1] / k, nz[2] / k)
+        };
+        Some(TriangleHit { t, u, v })
+    }
+}
+
+/// A ray prepared for the watertight test: its origin, and its direction
+/// scaled by a power of two and permuted so that its largest coordinate
+/// comes last.
+#[derive(Clone, Copy, Debug)]
+struct Shear {
+    origin: DVec3,
+    /// The axis of the direction's largest coordinate, `kz`; the others
+    /// follow cyclically (`kx = kz + 1`, `ky = kz + 2`, modulo 3).
+    kz: usize,
+    /// `d_kx, d_ky, d_kz` of the scaled direction, `|d_kz|` in `[1, 2)`
+    /// unless the direction is subnormal or huge.
+    d: [f64; 3],
+    /// The power of two the direction was multiplied by.
+    scale: f64,
+}
+
+/// `p`'s coordinates in the order `kx, ky, kz` for `kz = K`.
+#[inline(always)]
+fn permute<const K: usize>(p: DVec3) -> [f64; 3] {
+    match K {
+        0 => [p.y, p.z, p.x],
+        1 => [p.z, p.x, p.y],
+        _ => [p.x, p.y, p.z],
+    }
+}
+
+impl Shear {
+    #[inline(always)]
+    fn of(ray: &Ray) -> Shear {
+        let d = ray.direction();
+        let a = d.abs();
+        let kz = if a.x >= a.y {
+            if a.x >= a.z { 0 } else { 2 }
+        } else if a.y >= a.z {
+            1
+        } else {
+            2
+        };
+        let p = match kz {
+            0 => permute::<0>(d),
+            1 => permute::<1>(d),
+            _ => permute::<2>(d),
+        };
+        // `2^-e` for `|d_kz|` in `[2^e, 2^(e+1))`, from the exponent bits,
+        // clamped so that it is a normal number.
+        let biased = ((p[2].to_bits() >> 52) & 0x7ff).clamp(1, 2045);
+        let scale = f64::from_bits((2046 - biased) << 52);
+        Shear {
+            origin: ray.origin(),
+            kz,
+            d: p.map(|x| x * scale),
+            scale,
+        }
+    }
+
+    #[inline(always)]
+    fn cast(&self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
+        match self.kz {
+            0 => self.cast_permuted::<0>(tri, range),
+            1 => self.cast_permuted::<1>(tri, range),
+            _ => self.cast_permuted::<2>(tri, range),
+        }
+    }
+
+    /// The vertex `p` relative to the origin, sheared and multiplied by
+    /// `d_kz`: `(d_kz p_kx - d_kx p_kz, d_kz p_ky - d_ky p_kz, p_kz)`.
+    #[inline(always)]
+    fn vertex<const K: usize>(&self, p: DVec3) -> [f64; 3] {
+        let [x, y, z] = permute::<K>(p - self.origin);
+        let [dx, dy, dz] = self.d;
+        [dz * x - dx * z, dz * y - dy * z, z]
+    }
+
+    #[inline(always)]
+    fn cast_permuted<const K: usize>(
+        &self,
+        tri: &Triangle,
+        range: Interval,
+    ) -> Option<TriangleHit> {
+        let v = tri.v.map(|p| self.vertex::<K>(p));
+        sheared_hit(v, self.d[2], self.scale, range)
+    }
+}
+
+/// The watertight test on the sheared vertices `(x, y, z)` (see
+/// [`Shear::vertex`]), for a direction scaled by `scale` whose largest
+/// coordinate is `dz`.
+#[inline(always)]
+fn sheared_hit(
+    [a, b, c]: [[f64; 3]; 3],
+    dz: f64,
+    scale: f64,
+    range: Interval,
+) -> Option<TriangleHit> {
+    // Each edge's function from its own two vertices, unfused, so that
+    // the reversed edge of a neighbour computes exactly its negation.
+    let e0 = c[0] * b[1] - c[1] * b[0];
+    let e1 = a[0] * c[1] - a[1] * c[0];
+    let e2 = b[0] * a[1] - b[1] * a[0];
+    if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
+        return None;
+    }
+    let det = e0 + e1 + e2;
+    // NaN: overflowed products.
+    if det == 0.0 || det.is_nan() {
+        return None;
+    }
+    // The sheared system's t is (sum e_i z_i) / (d_kz det), in units of
+    // the scaled direction; the scale converts it back. One division.
+    let inv = 1.0 / (det * dz);
+    let t = (e0 * a[2] + e1 * b[2] + e2 * c[2]) * inv * scale;
+    if !range.contains(t) {
+        return None;
+    }
+    Some(TriangleHit {
+        t,
+        u: e1 * dz * inv,
+        v: e2 * dz * inv,
+    })
+}
+
+impl RayCast for Triangle {
+    /// The watertight hit ([`Triangle::cast_watertight`]), with the unit
+    /// normal `(v1 - v0) x (v2 - v0)` normalized (the front side, whichever
+    /// side the ray comes from). A degenerate triangle is never hit; nor is
+    /// one so thin that the cross product of its rounded edges vanishes
+    /// (it has no unit normal to report).
+    ///
+    /// ```
+    /// use exactray::query::ray::RayCast;
+    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::shape::Triangle;
+    /// let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    /// let ray = Ray::new([0.25, 0.25, -2.0], [0.0, 0.0, 1.0]).unwrap();
+    /// let hit = tri.cast(&ray, Interval::FORWARD).unwrap();
+    /// assert_eq!((hit.t, hit.point.to_array()), (2.0, [0.25, 0.25, 0.0]));
+    /// assert_eq!(hit.normal.to_array(), [0.0, 0.0, 1.0]);
+    /// ```
+    #[inline]
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let hit = self.cast_watertight(ray, range)?;
+        let normal = self.normal();
+        if normal == DVec3::ZERO {
+            return None;
+        }
+        Some(Hit {
+            t: hit.t,
+            point: ray.at(hit.t),
+            normal,
+        })
+    }
+
+    /// Whether [`RayCast::cast`] hits, without normalizing on a hit.
+    #[inline]
+    fn hits(&self, ray: &Ray, range: Interval) -> bool {
+        self.cast_watertight(ray, range).is_some() && self.normal() != DVec3::ZERO
+    }
+}

@@ -1,0 +1,417 @@
+//! Ray–triangle intersection against exact arithmetic (num-bigint): the
+//! exact variant's hit or miss equals the exact answer on every input and
+//! its `t` is within 4 units of rounding of the exact parameter; the
+//! watertight and exact variants never let a ray aimed at a shared edge or
+//! vertex of a tiled mesh through; all variants stay defined on every
+//! finite input.
+
+mod common;
+
+use common::oracle;
+use common::ray_cases::{self, Case, TiledMesh};
+use exactray::hard_inputs::{SplitMix64, step_ulps};
+use exactray::query::ray::RayCast;
+use exactray::query::ray::triangle::EXACT_T_ULPS;
+use exactray::ray::{Interval, Ray};
+use exactray::shape::Triangle;
+use glam::DVec3;
+use proptest::prelude::*;
+
+/// The exact answer: the exact `t` when the ray meets the triangle for a
+/// `t` in `[min, max]` (a coplanar ray is a miss, as the crate documents).
+fn exact_hit(c: &Case, range: Interval) -> Option<(num_bigint::BigInt, num_bigint::BigInt)> {
+    let (o, d, v) = c;
+    let line = oracle::line_triangle(o.to_array(), d.to_array(), v.map(|p| p.to_array()));
+    line.t
+        .filter(|(num, den)| oracle::ratio_in(num, den, range.min(), range.max()))
+}
+
+/// The exact variant agrees with the oracle on the hit, its `t` is within
+/// the documented bound, and its barycentrics are in `[0, 1]`. The range's
+/// finite non-zero bounds are compared with the returned `t` (documented),
+/// so they are checked only away from the exact `t`.
+fn check_exact(c: &Case, range: Interval) -> Result<(), TestCaseError> {
+    let (o, d, v) = *c;
+    let (Ok(ray), Ok(tri)) = (Ray::new(o, d), Triangle::new(v[0], v[1], v[2])) else {
+        return Ok(());
+    };
+    let got = tri.cast_exact(&ray, range);
+    let want = exact_hit(c, range);
+    prop_assert_eq!(
+        got.is_some(),
+        want.is_some(),
+        "{:?} {:?}: {:?}",
+        c,
+        range,
+        got
+    );
+    if let (Some(hit), Some((num, den))) = (got, want) {
+        if hit.t.is_infinite() {
+            // Documented: a parameter beyond the largest f64 overflows.
+            let beyond = f64::MAX.copysign(hit.t);
+            prop_assert!(
+                !oracle::ratio_in(&num, &den, -f64::MAX, f64::MAX),
+                "{} {}",
+                hit.t,
+                beyond
+            );
+            return Ok(());
+        }
+        prop_assert!(
+            oracle::within_units(hit.t, &num, &den, EXACT_T_ULPS as u32)
+                || hit.t.abs() < f64::MIN_POSITIVE,
+            "t = {} off the exact {}: {:?}",
+            hit.t,
+            oracle::ratio_to_f64(&num, &den),
+            c
+        );
+        prop_assert!((0.0..=1.0).contains(&hit.u) && (0.0..=1.0).contains(&hit.v));
+        prop_assert!(hit.u + hit.v <= 1.0 + 4.0 * f64::EPSILON);
+    }
+    Ok(())
+}
+
+/// The fast variants never panic and report only `t` inside the range.
+fn check_fast(c: &Case, range: Interval) -> Result<(), TestCaseError> {
+    let (o, d, v) = *c;
+    let (Ok(ray), Ok(tri)) = (Ray::new(o, d), Triangle::new(v[0], v[1], v[2])) else {
+        return Ok(());
+    };
+    for hit in [tri.cast_mt(&ray, range), tri.cast_watertight(&ray, range)]
+        .into_iter()
+        .flatten()
+    {
+        prop_assert!(range.contains(hit.t), "{:?}", hit);
+    }
+    if let Some(hit) = tri.cast(&ray, range) {
+        prop_assert!((hit.normal.length() - 1.0).abs() < 1e-12);
+    }
+    Ok(())
+}
+
+fn case_from(seed: u64, kind: u8) -> Case {
+    let mut rng = SplitMix64::new(seed);
+    match kind % 4 {
+        0 => ray_cases::uniform(&mut rng),
+        1 => ray_cases::far(&mut rng),
+        2 => ray_cases::near_edge(&mut rng),
+        _ => ray_cases::grazing(&mut rng),
+    }
+}
+
+/// Every coordinate of a case scaled by `2^k` (exact unless it leaves the
+/// normal range, which only makes the case another valid one).
+fn scaled((o, d, v): Case, k: i32) -> Case {
+    let s = |p: DVec3| p * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+    (s(o), s(d), v.map(s))
+}
+
+/// A coordinate moved by a few ulps.
+fn nudge(x: f64, n: i64) -> f64 {
+    step_ulps(x, n)
+}
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        -1e3..1e3f64,
+        any::<u64>()
+            .prop_map(f64::from_bits)
+            .prop_filter("finite", |x| x.is_finite()),
+        Just(0.0),
+    ]
+}
+
+fn any_dvec3() -> impl Strategy<Value = DVec3> {
+    (any_f64(), any_f64(), any_f64()).prop_map(|(x, y, z)| DVec3::new(x, y, z))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn exact_matches_oracle_on_generated_cases(seed: u64, kind: u8, k in -1000i32..1000) {
+        let c = case_from(seed, kind);
+        check_exact(&c, Interval::FORWARD)?;
+        check_exact(&scaled(c, k), Interval::FORWARD)?;
+        check_fast(&c, Interval::FORWARD)?;
+        check_fast(&scaled(c, k), Interval::FORWARD)?;
+    }
+
+    /// The origin moved `2^j` times farther along the ray, aimed at the
+    /// same point: the bits the case spans grow with `j`, through every
+    /// integer width the exact parameter is computed in.
+    #[test]
+    fn exact_across_spans(seed: u64, kind: u8, j in 0..900i32, k in -100i32..100) {
+        let (o, d, v) = case_from(seed, kind);
+        let target = o + d;
+        let far = target + (o - target) * 2f64.powi(j);
+        let c = (far, target - far, v);
+        check_exact(&c, Interval::FORWARD)?;
+        check_exact(&scaled(c, k), Interval::FORWARD)?;
+    }
+
+    #[test]
+    fn exact_matches_oracle_on_any_coordinates(
+        o in any_dvec3(), d in any_dvec3(), a in any_dvec3(), b in any_dvec3(), c in any_dvec3(),
+    ) {
+        let case = (o, d, [a, b, c]);
+        check_exact(&case, Interval::FORWARD)?;
+        check_exact(&case, Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap())?;
+        check_fast(&case, Interval::FORWARD)?;
+    }
+
+    /// Rays through a vertex or along an edge's line, and coplanar rays,
+    /// built from the triangle's own coordinates: exact zeros.
+    #[test]
+    fn exact_on_degenerate_configurations(seed: u64, kind: u8, n in -2i64..=2) {
+        let (o, _, v) = case_from(seed, kind);
+        let k = (seed % 3) as usize;
+        let cases = [
+            // Through a vertex (the direction rounded, then nudged).
+            (o, (v[k] - o).to_array().map(|x| nudge(x, n)).into(), v),
+            // Along an edge, from a vertex: the line is the edge's line.
+            (v[k], v[(k + 1) % 3] - v[k], v),
+            // From a vertex towards another vertex's mirror: in the plane.
+            (v[k], v[k] - v[(k + 2) % 3], v),
+            // A degenerate triangle: two coincident vertices.
+            (o, v[0] - o, [v[0], v[1], v[1]]),
+        ];
+        for c in cases {
+            check_exact(&c, Interval::FORWARD)?;
+            check_fast(&c, Interval::FORWARD)?;
+        }
+    }
+
+    /// Finite bounds other than 0: the answer may differ from the exact one
+    /// only when the exact `t` lies within the documented bound of one.
+    #[test]
+    fn exact_with_finite_bounds(seed: u64, kind: u8, lo in -5.0..5.0f64, len in 0.0..5.0f64) {
+        let c = case_from(seed, kind);
+        let range = Interval::new(lo, lo + len).unwrap();
+        let (o, d, v) = c;
+        let tri = Triangle::new(v[0], v[1], v[2]).unwrap();
+        let got = tri.cast_exact(&Ray::new(o, d).unwrap(), range).is_some();
+        let line = oracle::line_triangle(o.to_array(), d.to_array(), v.map(|p| p.to_array()));
+        if let Some((num, den)) = line.t {
+            let near = |b: f64| {
+                let e = EXACT_T_ULPS * f64::EPSILON * b.abs().max(f64::MIN_POSITIVE);
+                oracle::ratio_in(&num, &den, b - e, b + e)
+            };
+            if !near(range.min()) && !near(range.max()) {
+                prop_assert_eq!(got, oracle::ratio_in(&num, &den, range.min(), range.max()));
+            }
+        } else {
+            prop_assert!(!got);
+        }
+    }
+}
+
+/// Rays aimed at the interior edges and vertices of a tiled height field:
+/// the exact variant hits exactly the triangles the oracle hits, and the
+/// watertight and the exact variant hit at least one triangle of the mesh
+/// for every ray that passes through the surface there (its exact line
+/// meets the triangles around the target from the front; a ray that only
+/// touches a ridge may pass over it within rounding).
+#[test]
+fn no_ray_slips_through_shared_edges() {
+    let mut rng = SplitMix64::new(7);
+    let mesh = TiledMesh::new(&mut rng, 6);
+    let (edges, inner) = (mesh.interior_edges(), mesh.interior_vertices());
+    let tris: Vec<Triangle> = (0..mesh.triangles.len())
+        .map(|k| {
+            let v = mesh.triangle(k);
+            Triangle::new(v[0], v[1], v[2]).unwrap()
+        })
+        .collect();
+    let (mut double_hits, mut crossing) = (0, 0);
+    for _ in 0..3000 {
+        let (o, d, around) = mesh.shared_edge_ray(&mut rng, &edges, &inner);
+        let ray = Ray::new(o, d).unwrap();
+        let mut exact_hits = 0;
+        let mut watertight_hits = 0;
+        for (k, tri) in tris.iter().enumerate() {
+            let case = (o, d, mesh.triangle(k));
+            let want = exact_hit(&case, Interval::FORWARD).is_some();
+            let got = tri.cast_exact(&ray, Interval::FORWARD).is_some();
+            assert_eq!(got, want, "triangle {k}, ray {o:?} {d:?}");
+            exact_hits += got as u32;
+            watertight_hits += tri.cast_watertight(&ray, Interval::FORWARD).is_some() as u32;
+        }
+        let lines: Vec<_> = around
+            .iter()
+            .map(|&k| {
+                let v = mesh.triangle(k).map(|p| p.to_array());
+                oracle::line_triangle(o.to_array(), d.to_array(), v)
+            })
+            .collect();
+        let meets = lines.iter().any(|l| l.t.is_some());
+        if meets && lines.iter().all(|l| l.t.is_none() || l.front) {
+            crossing += 1;
+            assert!(
+                exact_hits >= 1 && watertight_hits >= 1,
+                "slipped through: {o:?} {d:?}"
+            );
+        }
+        double_hits += (exact_hits >= 2) as u32;
+    }
+    // Nearly every ray passes through the surface at its target.
+    assert!(crossing > 2500, "{crossing}");
+    // The aim is close enough that rays do meet shared edges exactly (a hit
+    // on both triangles): otherwise the test would not test edges.
+    assert!(double_hits > 0);
+}
+
+/// The same on a closed mesh, an octahedron: rays from outside through its
+/// edges and vertices into its interior hit at least two faces (in and out).
+#[test]
+fn closed_octahedron_is_watertight() {
+    let p = [
+        DVec3::X,
+        DVec3::Y,
+        -DVec3::X,
+        -DVec3::Y,
+        DVec3::Z * 1.3,
+        -DVec3::Z * 0.7,
+    ];
+    let faces: Vec<Triangle> = (0..4)
+        .flat_map(|i| {
+            let (a, b) = (p[i], p[(i + 1) % 4]);
+            [
+                Triangle::new(a, b, p[4]).unwrap(),
+                Triangle::new(b, a, p[5]).unwrap(),
+            ]
+        })
+        .collect();
+    let mut rng = SplitMix64::new(11);
+    for _ in 0..5000 {
+        let (i, s) = ((rng.next_u64() % 4) as usize, rng.next_f64());
+        let apex = if rng.next_u64() & 1 == 0 { p[4] } else { p[5] };
+        // A point on an edge (rounded): around the equator or up to an apex.
+        let target = match rng.next_u64() % 3 {
+            0 => p[i] + (p[(i + 1) % 4] - p[i]) * s,
+            1 => p[i] + (apex - p[i]) * s,
+            _ => p[i],
+        };
+        // From outside, through the edge point towards a point inside: the
+        // line crosses the interior, so it meets at least two faces (a line
+        // through an edge point at random could only touch the edge).
+        let inner = DVec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 0.4 - 0.2;
+        let o = target + (target - inner) * (1.0 + 4.0 * rng.next_f64());
+        let ray = Ray::new(o, target - o).unwrap();
+        let line = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+        let count = |f: &dyn Fn(&Triangle) -> bool| faces.iter().filter(|t| f(t)).count();
+        let exact = count(&|t| t.cast_exact(&ray, line).is_some());
+        let watertight = count(&|t| t.cast_watertight(&ray, line).is_some());
+        assert!(
+            exact >= 2 && watertight >= 2,
+            "{o:?} {target:?}: {exact} {watertight}"
+        );
+    }
+}
+
+#[test]
+fn degenerate_triangles_and_coplanar_rays_miss() {
+    let line = Triangle::new([0.0; 3], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]).unwrap();
+    let point = Triangle::new([1.0; 3], [1.0; 3], [1.0; 3]).unwrap();
+    let ray = Ray::new([0.5, 0.0, 1.0], [0.0, 1.0, -0.5]).unwrap();
+    // Exactly collinear (doubling is exact) but with rounded differences:
+    // no variant may hit it, whatever its rounding says.
+    let p = DVec3::new(0.1, 0.3, 0.7);
+    let thin = Triangle::new(p, p * 2.0, p * 4.0).unwrap();
+    let through = Ray::new(
+        [0.3, 0.0, 0.0],
+        DVec3::new(0.3, 0.9, 2.1) - DVec3::new(0.3, 0.0, 0.0),
+    )
+    .unwrap();
+    for (tri, ray) in [(line, ray), (point, ray), (thin, through)] {
+        assert!(tri.is_degenerate());
+        let all = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+        assert!(tri.cast_exact(&ray, all).is_none());
+        assert!(tri.cast_mt(&ray, all).is_none());
+        assert!(tri.cast_watertight(&ray, all).is_none());
+        assert!(tri.cast(&ray, all).is_none() && !tri.hits(&ray, all));
+    }
+    assert_eq!(line.normal(), DVec3::ZERO);
+    assert_eq!(point.normal(), DVec3::ZERO);
+    let tri = Triangle::new([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    assert!(!tri.is_degenerate());
+    // In the plane z = 0, through the triangle.
+    let coplanar = Ray::new([-1.0, 0.25, 0.0], [1.0, 0.0, 0.0]).unwrap();
+    assert!(tri.cast_exact(&coplanar, Interval::FORWARD).is_none());
+    assert!(tri.cast_mt(&coplanar, Interval::FORWARD).is_none());
+    assert!(tri.cast_watertight(&coplanar, Interval::FORWARD).is_none());
+}
+
+#[test]
+fn hits_behind_the_origin_and_reported_fields() {
+    let tri = Triangle::new([0.0; 3], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]).unwrap();
+    let ray = Ray::new([0.5, 0.5, -1.0], [0.0, 0.0, -1.0]).unwrap();
+    let all = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+    for cast in [
+        Triangle::cast_mt,
+        Triangle::cast_watertight,
+        Triangle::cast_exact,
+    ] {
+        assert!(cast(&tri, &ray, Interval::FORWARD).is_none());
+        let hit = cast(&tri, &ray, all).unwrap();
+        // Every value here is exact in f64, so all variants compute it.
+        assert_eq!((hit.t, hit.u, hit.v), (-1.0, 0.25, 0.25));
+        assert_eq!(hit.point(&tri), DVec3::new(0.5, 0.5, 0.0));
+    }
+    let hit = tri
+        .cast(&Ray::new([0.5, 0.5, 3.0], [0.0, 0.0, -2.0]).unwrap(), all)
+        .unwrap();
+    assert_eq!(
+        (hit.t, hit.point, hit.normal),
+        (1.5, DVec3::new(0.5, 0.5, 0.0), DVec3::Z)
+    );
+    assert!(tri.hits(&Ray::new([0.5, 0.5, 3.0], [0.0, 0.0, -2.0]).unwrap(), all));
+}
+
+#[test]
+fn extreme_magnitudes() {
+    // Products of these coordinates underflow or overflow in f64; the exact
+    // variant still answers exactly.
+    for s in [1e-300, 1e-160, 1e160, 1e300, 5e-324] {
+        let v = [DVec3::ZERO, DVec3::X * s, DVec3::Y * s];
+        let inside = (DVec3::new(0.25 * s, 0.25 * s, s), DVec3::new(0.0, 0.0, -s));
+        let outside = (DVec3::new(0.75 * s, 0.75 * s, s), DVec3::new(0.0, 0.0, -s));
+        for (o, d) in [inside, outside] {
+            check_exact(&(o, d, v), Interval::FORWARD).unwrap();
+        }
+    }
+    // Mixed: a huge triangle, a tiny ray direction.
+    let v = [
+        DVec3::new(-1e300, -1e300, 1.0),
+        DVec3::new(1e300, -1e300, 1.0),
+        DVec3::new(0.0, 1e300, 1.0),
+    ];
+    check_exact(
+        &(DVec3::ZERO, DVec3::new(1e-300, 0.0, 1e-310), v),
+        Interval::FORWARD,
+    )
+    .unwrap();
+    check_exact(
+        &(DVec3::ZERO, DVec3::new(0.0, 0.0, 5e-324), v),
+        Interval::FORWARD,
+    )
+    .unwrap();
+}
+
+#[test]
+fn triangle_validation() {
+    use exactray::InputError;
+    assert_eq!(
+        Triangle::new([0.0; 3], [0.0; 3], [f64::INFINITY, 0.0, 0.0]).unwrap_err(),
+        InputError::NonFinite { argument: "v2" }
+    );
+    assert!(Triangle::new([0.0; 3], [0.0; 3], [f64::MAX; 3]).is_ok());
+    // The normal of a huge triangle does not overflow.
+    let big = Triangle::new(
+        [-f64::MAX, 0.0, 0.0],
+        [f64::MAX, 0.0, 0.0],
+        [0.0, f64::MAX, 0.0],
+    )
+    .unwrap();
+    assert_eq!(big.normal(), DVec3::Z);
+}
