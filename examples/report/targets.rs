@@ -90,6 +90,22 @@ fn targets() -> Vec<Target> {
     for inputs in ["far", "near-edge", "grazing"] {
         all.push(variant("exactray-exact", inputs, "", 0.0, true));
     }
+    // Issue 3, quadrics: sphere and cylinder with exact hit or miss within
+    // 1.5x the textbook formula on ordinary rays; every shape at least as
+    // fast as parry3d's cast; no wrong hit or miss on the hard rays.
+    all.extend([
+        t("ray_sphere", "uniform", "naive", 1.5, true),
+        t("ray_cylinder", "uniform", "naive", 1.5, true),
+        t("ray_sphere", "uniform", "parry3d", 1.0, false),
+        t("ray_cylinder", "uniform", "parry3d", 1.0, false),
+        t("ray_cone", "uniform", "parry3d", 1.0, false),
+    ]);
+    for inputs in ["grazing", "far", "tangent"] {
+        all.push(t("ray_sphere", inputs, "", 0.0, true));
+    }
+    for inputs in ["any-axis", "grazing", "far", "parallel"] {
+        all.push(t("ray_cylinder", inputs, "", 0.0, true));
+    }
     all
 }
 
@@ -118,7 +134,7 @@ pub fn check(rows: &[Row]) -> (String, usize, usize) {
         met += ok as usize;
         let wrong = match (row.family, row.inputs.as_str()) {
             ("ray_triangle", "shared-edges") => "false miss",
-            ("ray_triangle", _) => "wrong hit or miss",
+            (f, _) if f.starts_with("ray_") => "wrong hit or miss",
             (f, _) if f.starts_with("nearest") => "wrong point",
             _ => "wrong sign",
         };
