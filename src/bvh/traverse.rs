@@ -37,17 +37,6 @@ fn pruned(d2: f64, r: f64, reach: f64) -> bool {
     d2 * PRUNE > t * t && d2 < f64::INFINITY
 }
 
-/// `true` when a point at least `|offset|` (computed, scaled) away cannot
-/// be within `reach`: the exact offset is at least `|offset| / (1 + u)`
-/// (one rounded subtraction; the scaling is exact, or off by `2^-1075` below
-/// `2^-1022`, which the `2^-529` in `reach` absorbs), and `reach` carries a
-/// factor `1 + 7u` over the exact distance it bounds.
-/// An overflowed (infinite) offset never prunes.
-#[inline(always)]
-fn beyond_plane(offset: f64, reach: f64) -> bool {
-    offset.abs() > reach && offset.abs() < f64::INFINITY
-}
-
 /// Stack capacity. Median splits halve every subtree, so a tree over at most
 /// `2^32` points is at most 28 levels deep above its leaves of 16 to 32
 /// points; the walk holds at most one entry per level (the far children on
@@ -88,25 +77,58 @@ fn dist2(p: DVec3, q: DVec3, s: f64) -> f64 {
     d.x * d.x + d.y * d.y + d.z * d.z
 }
 
+/// A subtree still to visit: its sphere (centre at computed squared scaled
+/// distance `d2`, scaled radius `r`) and, for points, its box bound: `off`
+/// holds, per axis, the computed scaled offset of `q` from the nearest split
+/// plane on the path to it that the subtree lies beyond (0 where none), and
+/// `box2` their computed squared norm.
+#[derive(Clone, Copy)]
+struct Pending {
+    link: u32,
+    len: u32,
+    d2: f64,
+    r: f64,
+    box2: f64,
+    off: [f64; 3],
+}
+
 /// Walks `tree` (non-empty) from the root, handing every point of every
 /// leaf that may hold a wanted point to `v`.
+///
+/// Two lower bounds prune a subtree: its sphere, and (for points) its box,
+/// the distance from `q` to the intersection of the half-spaces of the split
+/// planes between the root and it (Arya and Mount's incremental distance).
+/// A subtree's points lie beyond each of those planes, so `|p - q|^2` is at
+/// least the sum over axes of the squared offset of `q` from one such plane
+/// per axis. That sum is computed like a squared distance, from one rounded
+/// difference per axis (exact zeros elsewhere): the error bound of [`PRUNE`]
+/// holds for it as it stands, with a radius of 0.
 #[inline]
 pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64, v: &mut V) {
-    let mut stack = [(0u32, 0u32, 0.0f64, 0.0f64); STACK];
+    let none = Pending {
+        link: 0,
+        len: 0,
+        d2: 0.0,
+        r: 0.0,
+        box2: 0.0,
+        off: [0.0; 3],
+    };
+    let mut stack = [none; STACK];
     let mut top = 0;
     let points = tree.radii.is_empty();
-    let mut next = (
-        root.link,
-        root.len,
-        dist2(root.center, q, s),
-        root.radius * s,
-    );
+    let mut next = Pending {
+        link: root.link,
+        len: root.len,
+        d2: dist2(root.center, q, s),
+        r: root.radius * s,
+        ..none
+    };
     loop {
-        let (link, len, d2, r) = next;
-        if !pruned(d2, r, v.reach()) {
+        let reach = v.reach();
+        if !pruned(next.d2, next.r, reach) && !pruned(next.box2, 0.0, reach) {
             v.counter().node();
-            if len == 0 {
-                let node = &tree.nodes[link as usize];
+            if next.len == 0 {
+                let node = &tree.nodes[next.link as usize];
                 // Both children at once, lane by lane (two-wide vector code).
                 let lane = |k: usize| {
                     let d = [
@@ -118,30 +140,47 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                 };
                 let ((da, ra), (db, rb)) = (lane(0), lane(1));
                 // Points: the side of the split plane `q` is on comes first,
-                // and the other side is at least `|offset|` away. Balls may
-                // straddle the plane: nearer centre first, no plane bound.
-                let qa = match node.axis {
-                    0 => q.x,
-                    1 => q.y,
-                    _ => q.z,
+                // and the far side's box gains that plane. Balls may
+                // straddle the plane: nearer centre first, no box bound.
+                let axis = node.axis as usize % 3;
+                let mut far_off = next.off;
+                let mut far_box2 = 0.0;
+                let first = if points {
+                    let offset = (q[axis] - node.split) * s;
+                    far_off[axis] = offset;
+                    far_box2 =
+                        far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
+                    offset <= 0.0
+                } else {
+                    da <= db
                 };
-                let offset = if points { (qa - node.split) * s } else { 0.0 };
-                let first = if points { offset <= 0.0 } else { da <= db };
                 let (near, far) = if first { (0, 1) } else { (1, 0) };
                 let (dn, rn, df, rf) = if near == 0 {
                     (da, ra, db, rb)
                 } else {
                     (db, rb, da, ra)
                 };
-                let reach = v.reach();
-                if !pruned(df, rf, reach) && !beyond_plane(offset, reach) {
-                    stack[top] = (node.link[far], node.len[far], df, rf);
+                if !pruned(df, rf, reach) && !pruned(far_box2, 0.0, reach) {
+                    stack[top] = Pending {
+                        link: node.link[far],
+                        len: node.len[far],
+                        d2: df,
+                        r: rf,
+                        box2: far_box2,
+                        off: far_off,
+                    };
                     top += 1;
                 }
-                next = (node.link[near], node.len[near], dn, rn);
+                next = Pending {
+                    link: node.link[near],
+                    len: node.len[near],
+                    d2: dn,
+                    r: rn,
+                    ..next
+                };
                 continue;
             }
-            leaf(tree, link as usize, len as usize, q, s, v);
+            leaf(tree, next.link as usize, next.len as usize, q, s, v);
         }
         if top == 0 {
             return;
