@@ -34,9 +34,9 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> Spher
     };
     nodes.shrink_to_fit();
     SphereBvh {
-        xs: entries.iter().map(|e| e.p.x).collect(),
-        ys: entries.iter().map(|e| e.p.y).collect(),
-        zs: entries.iter().map(|e| e.p.z).collect(),
+        xs: padded(entries.iter().map(|e| e.p.x)),
+        ys: padded(entries.iter().map(|e| e.p.y)),
+        zs: padded(entries.iter().map(|e| e.p.z)),
         index: entries.iter().map(|e| e.index).collect(),
         radii: if balls {
             entries.iter().map(|e| e.r).collect()
@@ -47,6 +47,16 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> Spher
         root,
         max_abs,
     }
+}
+
+/// One coordinate of every point, then [`LEAF`] zeros, so that a leaf's
+/// distances can be computed over a whole leaf's worth of lanes (see
+/// `traverse::leaf`).
+fn padded(coordinates: impl ExactSizeIterator<Item = f64>) -> Vec<f64> {
+    let mut v = Vec::with_capacity(coordinates.len() + LEAF);
+    v.extend(coordinates);
+    v.extend([0.0; LEAF]);
+    v
 }
 
 /// The bounding box of a non-empty set.

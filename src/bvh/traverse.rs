@@ -195,18 +195,24 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
 #[inline(always)]
 fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64, v: &mut V) {
     v.counter().distances(len);
-    let end = start + len.min(LEAF);
-    let (xs, ys, zs) = (
-        &tree.xs[start..end],
-        &tree.ys[start..end],
-        &tree.zs[start..end],
-    );
+    // A whole leaf's worth of lanes, whatever `len`: a fixed trip count
+    // vectorizes without a remainder loop. The coordinate arrays carry
+    // `LEAF` points of padding, so the lanes past `len` read the next
+    // leaf's points (or the padding) and are ignored.
+    let end = start + LEAF;
+    let (Some(xs), Some(ys), Some(zs)) = (
+        tree.xs.get(start..end),
+        tree.ys.get(start..end),
+        tree.zs.get(start..end),
+    ) else {
+        return;
+    };
     let mut d2 = [0.0f64; LEAF];
-    for (k, d) in d2.iter_mut().enumerate().take(xs.len()) {
+    for k in 0..LEAF {
         let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
-        *d = dx * dx + dy * dy + dz * dz;
+        d2[k] = dx * dx + dy * dy + dz * dz;
     }
-    for (k, &d) in d2.iter().enumerate().take(xs.len()) {
+    for (k, &d) in d2.iter().enumerate().take(len) {
         v.point(tree, start + k, d);
     }
 }
