@@ -8,7 +8,7 @@
 //! `2^-1075`, which the bounds absorb).
 
 use super::sphere::UNDERFLOW_DISTANCE;
-use super::{Child, Counter, LEAF, SphereBvh, sqrt};
+use super::{Child, Counter, LEAF, Node, SphereBvh, sqrt};
 use crate::predicates::grain::unit_pow2;
 use glam::DVec3;
 
@@ -53,6 +53,16 @@ pub(crate) trait Visitor {
     fn reach(&self) -> f64;
     /// Point `i` (tree order) at computed squared scaled distance `d2`.
     fn point(&mut self, tree: &SphereBvh, i: usize, d2: f64);
+    /// The `len` points of a leaf from tree position `start`, at computed
+    /// squared scaled distances `d2[..len]` (the lanes past `len` hold
+    /// anything); `least` is the smallest of them.
+    #[inline(always)]
+    fn leaf(&mut self, tree: &SphereBvh, start: usize, d2: &[f64; LEAF], len: usize, least: f64) {
+        let _ = least;
+        for (k, &d) in d2.iter().enumerate().take(len) {
+            self.point(tree, start + k, d);
+        }
+    }
 }
 
 /// The bound a visitor reports for an upper bound `hi` of a squared scaled
@@ -70,26 +80,30 @@ pub(crate) fn scale_of(tree: &SphereBvh, q: DVec3) -> f64 {
     unit_pow2(tree.max_abs.max(q.abs().max_element()))
 }
 
-/// Computed squared norm of `(p - q) * s`.
-#[inline(always)]
-fn dist2(p: DVec3, q: DVec3, s: f64) -> f64 {
-    let d = (p - q) * s;
-    d.x * d.x + d.y * d.y + d.z * d.z
-}
-
-/// A subtree still to visit: its sphere (centre at computed squared scaled
-/// distance `d2`, scaled radius `r`) and, for points, its box bound: `off`
-/// holds, per axis, the computed scaled offset of `q` from the nearest split
-/// plane on the path to it that the subtree lies beyond (0 where none), and
-/// `box2` their computed squared norm.
+/// A far child still to visit: child `k` of node `parent`, and its box
+/// bound: `off` holds, per axis, the computed scaled offset of `q` from the
+/// last split plane on that axis between the root and the child that the
+/// child lies beyond (0 where none), and `box2` their computed squared norm.
+/// Its sphere is read from the parent when it is popped, against the reach
+/// of that moment.
 #[derive(Clone, Copy)]
 struct Pending {
-    link: u32,
-    len: u32,
-    d2: f64,
-    r: f64,
+    parent: u32,
+    k: u32,
     box2: f64,
     off: [f64; 3],
+}
+
+/// Computed squared scaled distance from `q` to the centre of child `k` of
+/// `node`, and the child's scaled radius.
+#[inline(always)]
+fn child_sphere(node: &Node, k: usize, q: DVec3, s: f64) -> (f64, f64) {
+    let (dx, dy, dz) = (
+        (node.cx[k] - q.x) * s,
+        (node.cy[k] - q.y) * s,
+        (node.cz[k] - q.z) * s,
+    );
+    (dx * dx + dy * dy + dz * dz, node.r[k] * s)
 }
 
 /// Walks `tree` (non-empty) from the root, handing every point of every
@@ -103,90 +117,98 @@ struct Pending {
 /// per axis. That sum is computed like a squared distance, from one rounded
 /// difference per axis (exact zeros elsewhere): the error bound of [`PRUNE`]
 /// holds for it as it stands, with a radius of 0.
+///
+/// Points descend to the side of each split plane that holds `q`, whose box
+/// is the parent's, so only its sphere is tested; the far side is pushed
+/// when its box cannot be pruned yet, and its sphere tested when popped.
+/// Balls may straddle a split plane: both children's spheres are measured
+/// and the nearer centre goes first, with no box bound.
 #[inline]
 pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64, v: &mut V) {
     let none = Pending {
-        link: 0,
-        len: 0,
-        d2: 0.0,
-        r: 0.0,
+        parent: 0,
+        k: 0,
         box2: 0.0,
         off: [0.0; 3],
     };
     let mut stack = [none; STACK];
     let mut top = 0;
     let points = tree.radii.is_empty();
-    let mut next = Pending {
-        link: root.link,
-        len: root.len,
-        d2: dist2(root.center, q, s),
-        r: root.radius * s,
-        ..none
-    };
+    let qs = [q.x, q.y, q.z];
+    // The subtree being entered, which has passed both prunes: its link and
+    // length (see [`Child`]) and its box's offsets.
+    let (mut link, mut len) = (root.link, root.len);
+    let mut off = [0.0; 3];
     loop {
-        let reach = v.reach();
-        if !pruned(next.d2, next.r, reach) && !pruned(next.box2, 0.0, reach) {
-            v.counter().node();
-            if next.len == 0 {
-                let node = &tree.nodes[next.link as usize];
-                // Both children at once, lane by lane (two-wide vector code).
-                let lane = |k: usize| {
-                    let d = [
-                        (node.cx[k] - q.x) * s,
-                        (node.cy[k] - q.y) * s,
-                        (node.cz[k] - q.z) * s,
-                    ];
-                    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2], node.r[k] * s)
-                };
-                let ((da, ra), (db, rb)) = (lane(0), lane(1));
-                // Points: the side of the split plane `q` is on comes first,
-                // and the far side's box gains that plane. Balls may
-                // straddle the plane: nearer centre first, no box bound.
+        v.counter().node();
+        let descend = if len == 0 {
+            let node = &tree.nodes[link as usize];
+            let reach = v.reach();
+            let (near, dn, rn) = if points {
                 let axis = node.axis as usize % 3;
-                let mut far_off = next.off;
-                let mut far_box2 = 0.0;
-                let first = if points {
-                    let offset = (q[axis] - node.split) * s;
-                    far_off[axis] = offset;
-                    far_box2 =
-                        far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
-                    offset <= 0.0
-                } else {
-                    da <= db
-                };
-                let (near, far) = if first { (0, 1) } else { (1, 0) };
-                let (dn, rn, df, rf) = if near == 0 {
-                    (da, ra, db, rb)
-                } else {
-                    (db, rb, da, ra)
-                };
-                if !pruned(df, rf, reach) && !pruned(far_box2, 0.0, reach) {
+                let offset = (qs[axis] - node.split) * s;
+                let near = (offset > 0.0) as usize;
+                let mut far_off = off;
+                far_off[axis] = offset;
+                let far_box2 =
+                    far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
+                if !pruned(far_box2, 0.0, reach) {
                     stack[top] = Pending {
-                        link: node.link[far],
-                        len: node.len[far],
-                        d2: df,
-                        r: rf,
+                        parent: link,
+                        k: 1 - near as u32,
                         box2: far_box2,
                         off: far_off,
                     };
                     top += 1;
                 }
-                next = Pending {
-                    link: node.link[near],
-                    len: node.len[near],
-                    d2: dn,
-                    r: rn,
-                    ..next
+                let (dn, rn) = child_sphere(node, near, q, s);
+                (near, dn, rn)
+            } else {
+                let ((da, ra), (db, rb)) =
+                    (child_sphere(node, 0, q, s), child_sphere(node, 1, q, s));
+                let (near, dn, rn, df, rf) = if da <= db {
+                    (0, da, ra, db, rb)
+                } else {
+                    (1, db, rb, da, ra)
                 };
+                if !pruned(df, rf, reach) {
+                    stack[top] = Pending {
+                        parent: link,
+                        k: 1 - near as u32,
+                        ..none
+                    };
+                    top += 1;
+                }
+                (near, dn, rn)
+            };
+            (link, len) = (node.link[near], node.len[near]);
+            !pruned(dn, rn, reach)
+        } else {
+            leaf(tree, link as usize, len as usize, q, s, v);
+            false
+        };
+        if descend {
+            continue;
+        }
+        loop {
+            if top == 0 {
+                return;
+            }
+            top -= 1;
+            let p = stack[top];
+            let reach = v.reach();
+            if pruned(p.box2, 0.0, reach) {
                 continue;
             }
-            leaf(tree, next.link as usize, next.len as usize, q, s, v);
+            let node = &tree.nodes[p.parent as usize];
+            let k = p.k as usize & 1;
+            let (d2, r) = child_sphere(node, k, q, s);
+            if pruned(d2, r, reach) {
+                continue;
+            }
+            (link, len, off) = (node.link[k], node.len[k], p.off);
+            break;
         }
-        if top == 0 {
-            return;
-        }
-        top -= 1;
-        next = stack[top];
     }
 }
 
@@ -207,12 +229,35 @@ fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64
     ) else {
         return;
     };
+    let len = len.min(LEAF);
+    // 0 for the leaf's lanes, `inf` past them.
+    let mask = &LANE_MASK[LEAF - len..][..LEAF];
     let mut d2 = [0.0f64; LEAF];
     for k in 0..LEAF {
         let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
         d2[k] = dx * dx + dy * dy + dz * dz;
     }
-    for (k, &d) in d2.iter().enumerate().take(len) {
-        v.point(tree, start + k, d);
+    // The smallest distance of the leaf, in four running minima that stay
+    // vector instructions (`<`, not `f64::min`: no NaN here).
+    let mut least = [f64::INFINITY; 4];
+    for (d, m) in d2.chunks_exact(4).zip(mask.chunks_exact(4)) {
+        for j in 0..4 {
+            let x = d[j] + m[j];
+            least[j] = if x < least[j] { x } else { least[j] };
+        }
     }
+    let least = least[0].min(least[1]).min(least[2].min(least[3]));
+    v.leaf(tree, start, &d2, len, least);
 }
+
+/// Added to a leaf's lanes: the lanes of `LANE_MASK[LEAF - len..][..LEAF]`
+/// are 0 for the `len` points of the leaf and `inf` past them.
+static LANE_MASK: [f64; 2 * LEAF] = {
+    let mut m = [0.0; 2 * LEAF];
+    let mut k = LEAF;
+    while k < 2 * LEAF {
+        m[k] = f64::INFINITY;
+        k += 1;
+    }
+    m
+};
