@@ -60,6 +60,9 @@ fn overflow_floor(d2: f64, lo: f64) -> f64 {
     if d2 < f64::INFINITY { lo } else { 0.0 }
 }
 
+// A leaf's lanes fit the bits of a `u32` (see `Best::leaf`).
+const _: () = assert!(LEAF <= 32);
+
 /// `true` when no coordinate difference between `q` and a point of `tree`
 /// can overflow: every magnitude is below `2^1022`, so differences stay
 /// below `2^1023`, and once scaled (see [`scale_of`]) below 2, as do their
@@ -278,10 +281,18 @@ impl<M: Metric, C: Counter> Visitor for Best<'_, M, C> {
         if least > cut {
             return;
         }
-        for (k, &d) in d2.iter().enumerate().take(len) {
-            if d <= cut {
-                self.point(tree, start + k, d);
-            }
+        // The lanes at or below the cut as bits (vector compares), then
+        // only those points, in order.
+        let mut wanted = 0u32;
+        for (k, &d) in d2.iter().enumerate() {
+            wanted |= ((d <= cut) as u32) << k;
+        }
+        // `len <= LEAF`; a leaf is never empty, but an empty one keeps no lane.
+        wanted &= u32::MAX.checked_shr((LEAF - len) as u32).unwrap_or(0);
+        while wanted != 0 {
+            let k = wanted.trailing_zeros() as usize;
+            wanted &= wanted - 1;
+            self.point(tree, start + k, d2[k]);
         }
     }
 

@@ -144,15 +144,17 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
         let descend = if len == 0 {
             let node = &tree.nodes[link as usize];
             let reach = v.reach();
-            let (near, dn, rn) = if points {
-                let axis = node.axis as usize % 3;
+            // Until the first leaf, nothing is pruned: no sphere is tested.
+            let open = reach == f64::INFINITY;
+            let near = if points {
+                let axis = (node.axis as usize).min(2);
                 let offset = (qs[axis] - node.split) * s;
                 let near = (offset > 0.0) as usize;
                 let mut far_off = off;
                 far_off[axis] = offset;
                 let far_box2 =
                     far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
-                if !pruned(far_box2, 0.0, reach) {
+                if open || !pruned(far_box2, 0.0, reach) {
                     stack[top] = Pending {
                         parent: link,
                         k: 1 - near as u32,
@@ -161,16 +163,11 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                     };
                     top += 1;
                 }
-                let (dn, rn) = child_sphere(node, near, q, s);
-                (near, dn, rn)
+                near
             } else {
                 let ((da, ra), (db, rb)) =
                     (child_sphere(node, 0, q, s), child_sphere(node, 1, q, s));
-                let (near, dn, rn, df, rf) = if da <= db {
-                    (0, da, ra, db, rb)
-                } else {
-                    (1, db, rb, da, ra)
-                };
+                let (near, df, rf) = if da <= db { (0, db, rb) } else { (1, da, ra) };
                 if !pruned(df, rf, reach) {
                     stack[top] = Pending {
                         parent: link,
@@ -179,10 +176,13 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                     };
                     top += 1;
                 }
-                (near, dn, rn)
+                near
             };
             (link, len) = (node.link[near], node.len[near]);
-            !pruned(dn, rn, reach)
+            open || {
+                let (dn, rn) = child_sphere(node, near, q, s);
+                !pruned(dn, rn, reach)
+            }
         } else {
             leaf(tree, link as usize, len as usize, q, s, v);
             false
@@ -195,7 +195,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                 return;
             }
             top -= 1;
-            let p = stack[top];
+            let p = &stack[top];
             let reach = v.reach();
             if pruned(p.box2, 0.0, reach) {
                 continue;
@@ -233,17 +233,17 @@ fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64
     // 0 for the leaf's lanes, `inf` past them.
     let mask = &LANE_MASK[LEAF - len..][..LEAF];
     let mut d2 = [0.0f64; LEAF];
-    for k in 0..LEAF {
-        let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
-        d2[k] = dx * dx + dy * dy + dz * dz;
-    }
-    // The smallest distance of the leaf, in four running minima that stay
-    // vector instructions (`<`, not `f64::min`: no NaN here).
+    // The smallest distance of the leaf too, in four running minima that
+    // stay in vector registers (`<`, not `f64::min`: no NaN here).
     let mut least = [f64::INFINITY; 4];
-    for (d, m) in d2.chunks_exact(4).zip(mask.chunks_exact(4)) {
-        for j in 0..4 {
-            let x = d[j] + m[j];
-            least[j] = if x < least[j] { x } else { least[j] };
+    for c in 0..LEAF / 4 {
+        for (j, m) in least.iter_mut().enumerate() {
+            let k = 4 * c + j;
+            let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
+            let d = dx * dx + dy * dy + dz * dz;
+            d2[k] = d;
+            let x = d + mask[k];
+            *m = if x < *m { x } else { *m };
         }
     }
     let least = least[0].min(least[1]).min(least[2].min(least[3]));
