@@ -61,6 +61,30 @@ fn main() {
     let cfg = framework::Config::new(true);
     let points = nearest::points(&cfg, dist, n);
     let qs = nearest::queries(&cfg, dist, n, q);
+    if which == "time" {
+        // Same-run ratios with the report's own methods (kiddo's answer
+        // includes fetching its point, as exactray's does): the methods
+        // alternate, 15 rounds, and the median per-round ratios are printed.
+        let ix = nearest::Indexes::build(points);
+        let methods = nearest::methods(&ix);
+        let pick = |name: &str| methods.iter().find(|m| m.name() == name).expect("method");
+        let (e, k, r) = (pick("exactray"), pick("kiddo"), pick("rstar"));
+        let mut rounds: Vec<[f64; 3]> = (0..15)
+            .map(|_| [e, k, r].map(|m| m.run_loop(&qs, 1).as_secs_f64() * 1e9 / q as f64))
+            .collect();
+        let median = |f: &dyn Fn(&[f64; 3]) -> f64, rounds: &mut Vec<[f64; 3]>| {
+            rounds.sort_by(|a, b| f(a).total_cmp(&f(b)));
+            f(&rounds[rounds.len() / 2])
+        };
+        println!(
+            "{} {n}: exactray {:.0} ns, / kiddo {:.3}, / rstar {:.3}",
+            dist.name(),
+            median(&|t| t[0], &mut rounds),
+            median(&|t| t[0] / t[1], &mut rounds),
+            median(&|t| t[0] / t[2], &mut rounds),
+        );
+        return;
+    }
     let mut check = (0, 0);
     if which != "kiddo" {
         let tree = nearest::exactray_build(&points);

@@ -8,7 +8,7 @@
 //! `2^-1075`, which the bounds absorb).
 
 use super::sphere::UNDERFLOW_DISTANCE;
-use super::{Child, Counter, LEAF, Node, SphereBvh, sqrt};
+use super::{Child, Counter, LEAF, SphereBvh, Spheres, sqrt};
 use crate::predicates::grain::unit_pow2;
 use glam::DVec3;
 
@@ -97,7 +97,7 @@ struct Pending {
 /// Computed squared scaled distance from `q` to the centre of child `k` of
 /// `node`, and the child's scaled radius.
 #[inline(always)]
-fn child_sphere(node: &Node, k: usize, q: DVec3, s: f64) -> (f64, f64) {
+fn child_sphere(node: &Spheres, k: usize, q: DVec3, s: f64) -> (f64, f64) {
     let (dx, dy, dz) = (
         (node.cx[k] - q.x) * s,
         (node.cy[k] - q.y) * s,
@@ -135,6 +135,14 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
     let mut top = 0;
     let points = tree.radii.is_empty();
     let qs = [q.x, q.y, q.z];
+    // `spheres` has an entry per node; a missing one (never) prunes nothing.
+    const NONE: Spheres = Spheres {
+        cx: [0.0; 2],
+        cy: [0.0; 2],
+        cz: [0.0; 2],
+        r: [f64::INFINITY; 2],
+    };
+    let spheres = |i: u32| tree.spheres.get(i as usize).unwrap_or(&NONE);
     // The subtree being entered, which has passed both prunes: its link and
     // length (see [`Child`]) and its box's offsets.
     let (mut link, mut len) = (root.link, root.len);
@@ -142,7 +150,8 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
     loop {
         v.counter().node();
         let descend = if len == 0 {
-            let node = &tree.nodes[link as usize];
+            let here = link;
+            let node = &tree.nodes[here as usize];
             let reach = v.reach();
             // Until the first leaf, nothing is pruned: no sphere is tested.
             let open = reach == f64::INFINITY;
@@ -156,7 +165,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                     far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
                 if open || !pruned(far_box2, 0.0, reach) {
                     stack[top] = Pending {
-                        parent: link,
+                        parent: here,
                         k: 1 - near as u32,
                         box2: far_box2,
                         off: far_off,
@@ -165,12 +174,14 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                 }
                 near
             } else {
-                let ((da, ra), (db, rb)) =
-                    (child_sphere(node, 0, q, s), child_sphere(node, 1, q, s));
+                let ((da, ra), (db, rb)) = (
+                    child_sphere(spheres(here), 0, q, s),
+                    child_sphere(spheres(here), 1, q, s),
+                );
                 let (near, df, rf) = if da <= db { (0, db, rb) } else { (1, da, ra) };
                 if !pruned(df, rf, reach) {
                     stack[top] = Pending {
-                        parent: link,
+                        parent: here,
                         k: 1 - near as u32,
                         ..none
                     };
@@ -180,7 +191,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
             };
             (link, len) = (node.link[near], node.len[near]);
             open || {
-                let (dn, rn) = child_sphere(node, near, q, s);
+                let (dn, rn) = child_sphere(spheres(here), near, q, s);
                 !pruned(dn, rn, reach)
             }
         } else {
@@ -202,7 +213,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
             }
             let node = &tree.nodes[p.parent as usize];
             let k = p.k as usize & 1;
-            let (d2, r) = child_sphere(node, k, q, s);
+            let (d2, r) = child_sphere(spheres(p.parent), k, q, s);
             if pruned(d2, r, reach) {
                 continue;
             }
