@@ -137,6 +137,7 @@ pub(crate) struct Child {
 /// [`Spheres`]: the first descent of a query reads no sphere, so keeping
 /// them out of this 32-byte record halves the bytes it fetches per level.
 #[derive(Clone, Copy, Debug)]
+#[repr(align(32))]
 pub(crate) struct Node {
     /// The median split: child 0's points have coordinate `axis` at most
     /// `split`, child 1's at least `split`.
@@ -149,6 +150,7 @@ pub(crate) struct Node {
 /// The spheres of an internal node's two children side by side, so that
 /// one fetch serves either.
 #[derive(Clone, Copy, Debug)]
+#[repr(align(64))]
 pub(crate) struct Spheres {
     pub cx: [f64; 2],
     pub cy: [f64; 2],
