@@ -130,12 +130,9 @@ fn owned_subtree(entries: &mut [Entry], offset: u32, scale: f64) -> (Child, Vec<
 #[cfg(feature = "rayon")]
 fn append(nodes: &mut Vec<(Node, Spheres)>, sub: Vec<(Node, Spheres)>, mut root: Child) -> Child {
     let base = nodes.len() as u32;
+    // A leaf's `right` is unused: moving every one is harmless.
     nodes.extend(sub.into_iter().map(|(mut n, sp)| {
-        for k in 0..2 {
-            if n.len[k] == 0 {
-                n.link[k] += base;
-            }
-        }
+        n.right += base;
         (n, sp)
     }));
     if root.len == 0 {
@@ -148,8 +145,7 @@ fn placeholder() -> (Node, Spheres) {
     (
         Node {
             split: 0.0,
-            link: [0; 2],
-            len: [0; 2],
+            right: 0,
             axis: 0,
         },
         Spheres {
@@ -175,8 +171,7 @@ fn parent(
     nodes[me] = (
         Node {
             split,
-            link: [l.link, r.link],
-            len: [l.len, r.len],
+            right: if r.len == 0 { r.link } else { 0 },
             axis: axis as u32,
         },
         Spheres {

@@ -132,18 +132,23 @@ pub(crate) struct Child {
     pub len: u32,
 }
 
-/// An internal node as the walk reads it at every step: its children's
-/// links and the plane that split them. Their spheres live apart, in
-/// [`Spheres`]: the first descent of a query reads no sphere, so keeping
-/// them out of this 32-byte record halves the bytes it fetches per level.
+/// An internal node as the walk reads it at every step: the plane that
+/// split its points and where its second child is. Nodes are in preorder,
+/// so an internal first child is the next node; and a subtree's points are
+/// a range whose split is fixed by its size (the first child takes half,
+/// rounded down; a subtree of at most [`LEAF`] points is a leaf), so the walk
+/// derives every child's range and kind as it goes. Its children's spheres
+/// live apart, in [`Spheres`]: the first descent of a query reads no
+/// sphere, and 16-byte nodes keep the path it walks small.
 #[derive(Clone, Copy, Debug)]
-#[repr(align(32))]
+#[repr(align(16))]
 pub(crate) struct Node {
     /// The median split: child 0's points have coordinate `axis` at most
     /// `split`, child 1's at least `split`.
     pub split: f64,
-    pub link: [u32; 2],
-    pub len: [u32; 2],
+    /// The node index of the second child when it is internal (unused for
+    /// a leaf).
+    pub right: u32,
     pub axis: u32,
 }
 
@@ -305,26 +310,52 @@ impl SphereBvh {
     /// assert!(radius >= 1.0 && radius < 1.0 + 1e-15);
     /// ```
     pub fn leaf_spheres(&self) -> impl Iterator<Item = (DVec3, f64, &[u32])> + '_ {
-        let root = self.root.iter().filter(|c| c.len > 0).copied();
-        let below = (0..self.nodes.len())
-            .flat_map(|i| [self.child(i, 0), self.child(i, 1)])
-            .filter(|c| c.len > 0);
-        root.chain(below).map(|c| {
+        self.leaves().map(|c| {
             let range = c.link as usize..(c.link + c.len) as usize;
             (c.center, c.radius, &self.index[range])
         })
     }
 
-    /// Child `k` of internal node `i`.
-    #[inline(always)]
-    pub(crate) fn child(&self, i: usize, k: usize) -> Child {
-        let (n, sp) = (&self.nodes[i], &self.spheres[i]);
-        Child {
-            center: DVec3::new(sp.cx[k], sp.cy[k], sp.cz[k]),
-            radius: sp.r[k],
-            link: n.link[k],
-            len: n.len[k],
+    /// Every leaf as a [`Child`], depth first.
+    pub(crate) fn leaves(&self) -> impl Iterator<Item = Child> + '_ {
+        // Subtrees to go: node (or leaf), first point, size, sphere. Depth
+        // first, at most one pending entry per level (see `traverse`).
+        let mut stack = [(0u32, 0u32, 0u32, DVec3::ZERO, 0.0f64); 64];
+        let mut top = 0;
+        if let Some(root) = self.root {
+            stack[0] = (root.link, 0, self.len() as u32, root.center, root.radius);
+            top = 1;
         }
+        core::iter::from_fn(move || {
+            loop {
+                if top == 0 {
+                    return None;
+                }
+                top -= 1;
+                let (at, start, count, center, radius) = stack[top];
+                if count as usize <= LEAF {
+                    return Some(Child {
+                        center,
+                        radius,
+                        link: start,
+                        len: count,
+                    });
+                }
+                let (Some(node), Some(sp)) =
+                    (self.nodes.get(at as usize), self.spheres.get(at as usize))
+                else {
+                    continue;
+                };
+                let half = count / 2;
+                let sphere = |k: usize| (DVec3::new(sp.cx[k], sp.cy[k], sp.cz[k]), sp.r[k]);
+                let ((c1, r1), (c0, r0)) = (sphere(1), sphere(0));
+                if top + 2 <= stack.len() {
+                    stack[top] = (node.right, start + half, count - half, c1, r1);
+                    stack[top + 1] = (at + 1, start, half, c0, r0);
+                    top += 2;
+                }
+            }
+        })
     }
 
     /// The `i`-th point in tree order.

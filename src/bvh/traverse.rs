@@ -90,8 +90,19 @@ pub(crate) fn scale_of(tree: &SphereBvh, q: DVec3) -> f64 {
 struct Pending {
     parent: u32,
     k: u32,
+    child: Subtree,
     box2: f64,
     off: [f64; 3],
+}
+
+/// A subtree: its node (when internal), its first point in tree order and
+/// its number of points, which makes it a leaf when at most [`LEAF`] (see
+/// [`Node`](super::Node)).
+#[derive(Clone, Copy)]
+struct Subtree {
+    at: u32,
+    start: u32,
+    count: u32,
 }
 
 /// Computed squared scaled distance from `q` to the centre of child `k` of
@@ -128,6 +139,11 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
     let none = Pending {
         parent: 0,
         k: 0,
+        child: Subtree {
+            at: 0,
+            start: 0,
+            count: 0,
+        },
         box2: 0.0,
         off: [0.0; 3],
     };
@@ -143,15 +159,32 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
         r: [f64::INFINITY; 2],
     };
     let spheres = |i: u32| tree.spheres.get(i as usize).unwrap_or(&NONE);
-    // The subtree being entered, which has passed both prunes: its link and
-    // length (see [`Child`]) and its box's offsets.
-    let (mut link, mut len) = (root.link, root.len);
+    // The subtree being entered, which has passed both prunes, and its
+    // box's offsets.
+    let mut cur = Subtree {
+        at: root.link,
+        start: 0,
+        count: tree.len() as u32,
+    };
     let mut off = [0.0; 3];
     loop {
         v.counter().node();
-        let descend = if len == 0 {
-            let here = link;
+        let descend = if cur.count as usize > LEAF {
+            let here = cur.at;
             let node = &tree.nodes[here as usize];
+            let half = cur.count / 2;
+            let children = [
+                Subtree {
+                    at: here + 1,
+                    start: cur.start,
+                    count: half,
+                },
+                Subtree {
+                    at: node.right,
+                    start: cur.start + half,
+                    count: cur.count - half,
+                },
+            ];
             let reach = v.reach();
             // Until the first leaf, nothing is pruned: no sphere is tested.
             let open = reach == f64::INFINITY;
@@ -167,6 +200,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                     stack[top] = Pending {
                         parent: here,
                         k: 1 - near as u32,
+                        child: children[1 - near],
                         box2: far_box2,
                         off: far_off,
                     };
@@ -183,19 +217,20 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
                     stack[top] = Pending {
                         parent: here,
                         k: 1 - near as u32,
+                        child: children[1 - near],
                         ..none
                     };
                     top += 1;
                 }
                 near
             };
-            (link, len) = (node.link[near], node.len[near]);
+            cur = children[near];
             open || {
                 let (dn, rn) = child_sphere(spheres(here), near, q, s);
                 !pruned(dn, rn, reach)
             }
         } else {
-            leaf(tree, link as usize, len as usize, q, s, v);
+            leaf(tree, cur.start as usize, cur.count as usize, q, s, v);
             false
         };
         if descend {
@@ -211,13 +246,12 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
             if pruned(p.box2, 0.0, reach) {
                 continue;
             }
-            let node = &tree.nodes[p.parent as usize];
             let k = p.k as usize & 1;
             let (d2, r) = child_sphere(spheres(p.parent), k, q, s);
             if pruned(d2, r, reach) {
                 continue;
             }
-            (link, len, off) = (node.link[k], node.len[k], p.off);
+            (cur, off) = (p.child, p.off);
             break;
         }
     }
