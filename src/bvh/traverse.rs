@@ -1,5 +1,6 @@
 //! The branch-and-bound walk every query shares: a stack, the nearer child
-//! first, and the exam's prune `|c - q| - r >= d`, made conservative.
+//! first, and the exam's prune `|c - q| - r >= d` with a box bound beside
+//! it, both made conservative.
 //!
 //! All distances of one query are computed on differences scaled by a power
 //! of two `s` chosen from the query and the largest coordinate of the index,
@@ -67,7 +68,7 @@ pub(crate) trait Visitor {
 
 /// The bound a visitor reports for an upper bound `hi` of a squared scaled
 /// distance: an upper bound of the distance, widened by the margins that
-/// [`LOWER`] leaves to this side (`sqrt` rounding, the subtraction of the
+/// [`PRUNE`] leaves to this side (`sqrt` rounding, the subtraction of the
 /// radius, and the `2^-535` underflow term, doubled).
 #[inline]
 pub(crate) fn reach_of(hi: f64) -> f64 {
@@ -80,8 +81,8 @@ pub(crate) fn scale_of(tree: &SphereBvh, q: DVec3) -> f64 {
     unit_pow2(tree.max_abs.max(q.abs().max_element()))
 }
 
-/// A far child still to visit: child `k` of node `parent`, and its box
-/// bound: `off` holds, per axis, the computed scaled offset of `q` from the
+/// A far child still to visit: child `k` of node `parent` (where its
+/// sphere is), the subtree it is, and its box bound: `off` holds, per axis, the computed scaled offset of `q` from the
 /// last split plane on that axis between the root and the child that the
 /// child lies beyond (0 where none), and `box2` their computed squared norm.
 /// Its sphere is read from the parent when it is popped, against the reach
