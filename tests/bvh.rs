@@ -370,6 +370,13 @@ fn leaf_spheres_enclose_their_points_and_are_tight() {
     for set in [Set::Uniform, Set::Clustered] {
         let (points, _) = case(set, 5, 20_000);
         let bvh = SphereBvh::from_points(&points).unwrap();
+        // The leaves partition the points.
+        let mut all: Vec<u32> = bvh
+            .leaf_spheres()
+            .flat_map(|(_, _, i)| i.to_vec())
+            .collect();
+        all.sort_unstable();
+        assert!(all.iter().copied().eq(0..points.len() as u32));
         let (mut sum, mut count) = (0.0, 0);
         for (k, (c, r, indices)) in bvh.leaf_spheres().enumerate() {
             for &i in indices {

@@ -3,7 +3,7 @@
 //! bottom-up (a leaf's around its points, a parent's around its children's).
 
 use super::sphere::{merge, norm2_root_up, sum_up, unscale_up};
-use super::{Child, LEAF, Node, SphereBvh};
+use super::{Child, LEAF, Node, SphereBvh, Spheres};
 use crate::predicates::grain::unit_pow2;
 use alloc::vec::Vec;
 use glam::DVec3;
@@ -32,11 +32,11 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> Spher
     } else {
         Some(subtree(&mut entries, 0, scale, &mut nodes))
     };
-    nodes.shrink_to_fit();
+    let (nodes, spheres) = nodes.into_iter().unzip();
     SphereBvh {
-        xs: entries.iter().map(|e| e.p.x).collect(),
-        ys: entries.iter().map(|e| e.p.y).collect(),
-        zs: entries.iter().map(|e| e.p.z).collect(),
+        xs: padded(entries.iter().map(|e| e.p.x)),
+        ys: padded(entries.iter().map(|e| e.p.y)),
+        zs: padded(entries.iter().map(|e| e.p.z)),
         index: entries.iter().map(|e| e.index).collect(),
         radii: if balls {
             entries.iter().map(|e| e.r).collect()
@@ -44,9 +44,20 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> Spher
             Vec::new()
         },
         nodes,
+        spheres,
         root,
         max_abs,
     }
+}
+
+/// One coordinate of every point, then [`LEAF`] zeros, so that a leaf's
+/// distances can be computed over a whole leaf's worth of lanes (see
+/// `traverse::leaf`).
+fn padded(coordinates: impl ExactSizeIterator<Item = f64>) -> Vec<f64> {
+    let mut v = Vec::with_capacity(coordinates.len() + LEAF);
+    v.extend(coordinates);
+    v.extend([0.0; LEAF]);
+    v
 }
 
 /// The bounding box of a non-empty set.
@@ -60,7 +71,12 @@ fn bounds(entries: &[Entry]) -> (DVec3, DVec3) {
 /// Builds the subtree over `entries` (non-empty; they sit at `offset` in
 /// tree order) into `nodes`, splitting at the median of the widest axis of
 /// their bounding box.
-fn subtree(entries: &mut [Entry], offset: u32, scale: f64, nodes: &mut Vec<Node>) -> Child {
+fn subtree(
+    entries: &mut [Entry],
+    offset: u32,
+    scale: f64,
+    nodes: &mut Vec<(Node, Spheres)>,
+) -> Child {
     let (lo, hi) = bounds(entries);
     if entries.len() <= LEAF {
         let (center, radius) = points_sphere(entries, (lo, hi), scale);
@@ -103,7 +119,7 @@ fn subtree(entries: &mut [Entry], offset: u32, scale: f64, nodes: &mut Vec<Node>
 
 /// A subtree in a vector of its own (for a parallel task).
 #[cfg(feature = "rayon")]
-fn owned_subtree(entries: &mut [Entry], offset: u32, scale: f64) -> (Child, Vec<Node>) {
+fn owned_subtree(entries: &mut [Entry], offset: u32, scale: f64) -> (Child, Vec<(Node, Spheres)>) {
     let mut nodes = Vec::with_capacity(entries.len() / 4 + 1);
     let child = subtree(entries, offset, scale, &mut nodes);
     (child, nodes)
@@ -112,15 +128,12 @@ fn owned_subtree(entries: &mut [Entry], offset: u32, scale: f64) -> (Child, Vec<
 /// Appends a subtree built on its own, moving its node links by where it
 /// lands; returns its root with the moved link.
 #[cfg(feature = "rayon")]
-fn append(nodes: &mut Vec<Node>, sub: Vec<Node>, mut root: Child) -> Child {
+fn append(nodes: &mut Vec<(Node, Spheres)>, sub: Vec<(Node, Spheres)>, mut root: Child) -> Child {
     let base = nodes.len() as u32;
-    nodes.extend(sub.into_iter().map(|mut n| {
-        for k in 0..2 {
-            if n.len[k] == 0 {
-                n.link[k] += base;
-            }
-        }
-        n
+    // A leaf's `right` is unused: moving every one is harmless.
+    nodes.extend(sub.into_iter().map(|(mut n, sp)| {
+        n.right += base;
+        (n, sp)
     }));
     if root.len == 0 {
         root.link += base;
@@ -128,40 +141,46 @@ fn append(nodes: &mut Vec<Node>, sub: Vec<Node>, mut root: Child) -> Child {
     root
 }
 
-fn placeholder() -> Node {
-    Node {
-        cx: [0.0; 2],
-        cy: [0.0; 2],
-        cz: [0.0; 2],
-        r: [0.0; 2],
-        link: [0; 2],
-        len: [0; 2],
-        split: 0.0,
-        axis: 0,
-    }
+fn placeholder() -> (Node, Spheres) {
+    (
+        Node {
+            split: 0.0,
+            right: 0,
+            axis: 0,
+        },
+        Spheres {
+            cx: [0.0; 2],
+            cy: [0.0; 2],
+            cz: [0.0; 2],
+            r: [0.0; 2],
+        },
+    )
 }
 
 /// Fills in node `me` from its children and returns it as a child. Its
 /// sphere is the smaller of the one around its children's spheres and
 /// `around`, the one around its points: either encloses every point below.
 fn parent(
-    nodes: &mut [Node],
+    nodes: &mut [(Node, Spheres)],
     me: usize,
     [l, r]: [Child; 2],
     (axis, split): (usize, f64),
     around: (DVec3, f64),
     scale: f64,
 ) -> Child {
-    nodes[me] = Node {
-        cx: [l.center.x, r.center.x],
-        cy: [l.center.y, r.center.y],
-        cz: [l.center.z, r.center.z],
-        r: [l.radius, r.radius],
-        link: [l.link, r.link],
-        len: [l.len, r.len],
-        split,
-        axis: axis as u32,
-    };
+    nodes[me] = (
+        Node {
+            split,
+            right: if r.len == 0 { r.link } else { 0 },
+            axis: axis as u32,
+        },
+        Spheres {
+            cx: [l.center.x, r.center.x],
+            cy: [l.center.y, r.center.y],
+            cz: [l.center.z, r.center.z],
+            r: [l.radius, r.radius],
+        },
+    );
     let (mut center, mut radius) = merge(l.center, l.radius, r.center, r.radius, scale);
     if around.1 < radius {
         (center, radius) = around;

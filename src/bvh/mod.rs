@@ -4,7 +4,9 @@
 //! Every node holds a sphere that encloses its points; a query keeps the best
 //! distance `d` found so far and never descends into a node whose sphere
 //! cannot hold a closer point, `|c - q| - r >= d` (the exam's prune), visiting
-//! the nearer child first.
+//! the nearer child first. For points, a second lower bound prunes too: the
+//! distance to the node's box, the intersection of the half-spaces of the
+//! median split planes above it (Arya and Mount's incremental distance).
 //!
 //! # Exactness
 //! Squared distances are computed in `f64` with a proven relative error bound
@@ -31,19 +33,37 @@
 //! sphere around its own points' bounding-box centre. The second is usually
 //! the smaller: while the tree was developed (leaves of 8 points then),
 //! choosing it cut the nodes a query visits on 10^6 uniform points from 132
-//! to 50 (counted with [`QueryStats`]); the current tree visits 40 (the
-//! report's `nearest` notes). Every radius is
-//! rounded up with a proven margin (`sphere.rs`), so it bounds the exact
-//! distances. Each node also keeps its median split plane, a second lower
-//! bound for the far child.
+//! to 50 (counted with [`QueryStats`]). Every radius is rounded up with a
+//! proven margin (`sphere.rs`), so it bounds the exact distances.
+//!
+//! # The walk
+//! (`traverse.rs`.) A query first descends along the side of each split
+//! plane that holds `q`, testing no sphere (nothing can be pruned before the
+//! first leaf) and stacking every far child with its box. Afterwards a
+//! popped child is tested against the best so far by its box, then by its
+//! sphere, and on the way down only the near child's sphere is tested (its
+//! box is its parent's). A leaf's distances are computed in one vector pass
+//! over all [`LEAF`] lanes; the nearest-point query rejects a leaf whose
+//! least distance is certainly beyond the best, and otherwise only looks at
+//! the lanes near that least distance. At 10^6 uniform points a query visits
+//! 21 nodes and computes 70 distances (the report's `nearest` notes; before
+//! the box bound: 40 and 94).
+//!
+//! The nodes are laid out for memory, which bounds query time at 10^6
+//! points more than instructions do: 16 bytes each (split, second child,
+//! axis) in preorder, every child's point range derived from its subtree's
+//! size, and the children's spheres apart (64 bytes per node, read only
+//! when tested); each record is aligned to its size.
 //!
 //! Tightness, from `cargo test --test bvh leaf_spheres -- --nocapture`: leaf
 //! radii average 1.09x (uniform points) and 1.07x (clustered points) the
 //! radius of the minimal enclosing sphere of the same points.
 //!
 //! Memory ([`SphereBvh::memory_bytes`]): 28 bytes per point (coordinates and
-//! original index) plus one 96-byte node per 16 to 32 points: 31 to 33
-//! bytes per point in all.
+//! original index, the coordinates padded by [`LEAF`] points) plus, per
+//! internal node (one per 16 to 32 points), 16 bytes of node and 64 of
+//! spheres: 30.6 to 32.2 bytes per point in all (the report's
+//! `nearest_build`).
 
 mod batch;
 mod build;
@@ -60,7 +80,9 @@ use glam::DVec3;
 
 /// Most points a leaf holds. Leaf distances are computed in one vectorized
 /// pass, so bigger leaves cost little; 32 visited the fewest nodes for the
-/// time (8 and 16 were slower on 10^4 and 10^6 uniform points).
+/// time (8 and 16 were slower on 10^4 and 10^6 uniform points). With the
+/// current walk, 16 again took more time at 10^6 points (twice the nodes to
+/// fetch), and 64 took 35% more instructions for no time gained.
 pub(crate) const LEAF: usize = 32;
 
 /// Points per index the tree can hold: indices are `u32`.
@@ -132,32 +154,35 @@ pub(crate) struct Child {
     pub len: u32,
 }
 
-/// An internal node: its two children's spheres side by side, so that one
-/// fetch decides both, their links, and the plane that split them.
+/// An internal node as the walk reads it at every step: the plane that
+/// split its points and where its second child is. Nodes are in preorder,
+/// so an internal first child is the next node; and a subtree's points are
+/// a range whose split is fixed by its size (the first child takes half,
+/// rounded down; a subtree of at most [`LEAF`] points is a leaf), so the walk
+/// derives every child's range and kind as it goes. Its children's spheres
+/// live apart, in [`Spheres`]: the first descent of a query reads no
+/// sphere, and 16-byte nodes keep the path it walks small.
 #[derive(Clone, Copy, Debug)]
+#[repr(align(16))]
 pub(crate) struct Node {
+    /// The median split: child 0's points have coordinate `axis` at most
+    /// `split`, child 1's at least `split`.
+    pub split: f64,
+    /// The node index of the second child when it is internal (unused for
+    /// a leaf).
+    pub right: u32,
+    pub axis: u32,
+}
+
+/// The spheres of an internal node's two children side by side, so that
+/// one fetch serves either.
+#[derive(Clone, Copy, Debug)]
+#[repr(align(64))]
+pub(crate) struct Spheres {
     pub cx: [f64; 2],
     pub cy: [f64; 2],
     pub cz: [f64; 2],
     pub r: [f64; 2],
-    pub link: [u32; 2],
-    pub len: [u32; 2],
-    /// The median split: child 0's points have coordinate `axis` at most
-    /// `split`, child 1's at least `split`.
-    pub split: f64,
-    pub axis: u32,
-}
-
-impl Node {
-    #[inline(always)]
-    pub(crate) fn child(&self, k: usize) -> Child {
-        Child {
-            center: DVec3::new(self.cx[k], self.cy[k], self.cz[k]),
-            radius: self.r[k],
-            link: self.link[k],
-            len: self.len[k],
-        }
-    }
 }
 
 /// A bounding-sphere hierarchy over a set of points, answering nearest,
@@ -185,6 +210,8 @@ pub struct SphereBvh {
     /// points.
     pub(crate) radii: Vec<f64>,
     pub(crate) nodes: Vec<Node>,
+    /// `spheres[i]`: the spheres of `nodes[i]`'s children.
+    pub(crate) spheres: Vec<Spheres>,
     /// The root's sphere and link; `None` for an empty index.
     pub(crate) root: Option<Child>,
     /// The largest coordinate magnitude of any point.
@@ -284,12 +311,14 @@ impl SphereBvh {
     }
 
     /// Heap bytes held: coordinates (24 per point), original indices (4 per
-    /// point) and internal nodes (96 each, one per 16 to 32 points).
+    /// point) and internal nodes (80 each with their children's spheres, one
+    /// per 16 to 32 points).
     pub fn memory_bytes(&self) -> usize {
         (self.xs.capacity() + self.ys.capacity() + self.zs.capacity()) * 8
             + self.index.capacity() * 4
             + self.radii.capacity() * 8
             + self.nodes.capacity() * core::mem::size_of::<Node>()
+            + self.spheres.capacity() * core::mem::size_of::<Spheres>()
     }
 
     /// Every leaf's bounding sphere (centre, radius) and the original indices
@@ -304,15 +333,51 @@ impl SphereBvh {
     /// assert!(radius >= 1.0 && radius < 1.0 + 1e-15);
     /// ```
     pub fn leaf_spheres(&self) -> impl Iterator<Item = (DVec3, f64, &[u32])> + '_ {
-        let root = self.root.iter().filter(|c| c.len > 0).copied();
-        let below = self
-            .nodes
-            .iter()
-            .flat_map(|n| [n.child(0), n.child(1)])
-            .filter(|c| c.len > 0);
-        root.chain(below).map(|c| {
+        self.leaves().map(|c| {
             let range = c.link as usize..(c.link + c.len) as usize;
             (c.center, c.radius, &self.index[range])
+        })
+    }
+
+    /// Every leaf as a [`Child`], depth first.
+    pub(crate) fn leaves(&self) -> impl Iterator<Item = Child> + '_ {
+        // Subtrees to go: node (or leaf), first point, size, sphere. Depth
+        // first, at most one pending entry per level (see `traverse`).
+        let mut stack = [(0u32, 0u32, 0u32, DVec3::ZERO, 0.0f64); 64];
+        let mut top = 0;
+        if let Some(root) = self.root {
+            stack[0] = (root.link, 0, self.len() as u32, root.center, root.radius);
+            top = 1;
+        }
+        core::iter::from_fn(move || {
+            loop {
+                if top == 0 {
+                    return None;
+                }
+                top -= 1;
+                let (at, start, count, center, radius) = stack[top];
+                if count as usize <= LEAF {
+                    return Some(Child {
+                        center,
+                        radius,
+                        link: start,
+                        len: count,
+                    });
+                }
+                let (Some(node), Some(sp)) =
+                    (self.nodes.get(at as usize), self.spheres.get(at as usize))
+                else {
+                    continue;
+                };
+                let half = count / 2;
+                let sphere = |k: usize| (DVec3::new(sp.cx[k], sp.cy[k], sp.cz[k]), sp.r[k]);
+                let ((c1, r1), (c0, r0)) = (sphere(1), sphere(0));
+                if top + 2 <= stack.len() {
+                    stack[top] = (node.right, start + half, count - half, c1, r1);
+                    stack[top + 1] = (at + 1, start, half, c0, r0);
+                    top += 2;
+                }
+            }
         })
     }
 

@@ -3,7 +3,7 @@
 
 use super::sphere::UNDERFLOW_DISTANCE;
 use super::traverse::{Visitor, reach_of, scale_of, walk};
-use super::{Child, Counter, Nearest, QueryStats, SphereBvh, sqrt};
+use super::{Child, Counter, LEAF, Nearest, QueryStats, SphereBvh, sqrt};
 use crate::error::InputError;
 use crate::point::IntoDVec3;
 use crate::predicates::ball::{cmp_ball_distances, cmp_length_to_sum};
@@ -60,6 +60,18 @@ fn overflow_floor(d2: f64, lo: f64) -> f64 {
     if d2 < f64::INFINITY { lo } else { 0.0 }
 }
 
+// A leaf's lanes fit the bits of a `u32` (see `Best::leaf`).
+const _: () = assert!(LEAF <= 32);
+
+/// `true` when no coordinate difference between `q` and a point of `tree`
+/// can overflow: every magnitude is below `2^1022`, so differences stay
+/// below `2^1023`, and once scaled (see [`scale_of`]) below 2, as do their
+/// squares' sums below 12.
+#[inline]
+fn no_overflow(tree: &SphereBvh, q: DVec3) -> bool {
+    tree.max_abs.max(q.abs().max_element()) < crate::predicates::grain::pow2(1022)
+}
+
 /// How a query measures items: points by computed squared scaled distance,
 /// balls by computed scaled distance to the ball. A candidate's key and the
 /// band of keys its exact value may have; an exact comparison for the rest.
@@ -71,6 +83,16 @@ pub(crate) trait Metric {
     /// another candidate whose band lies wholly above it is certainly
     /// farther, wholly below it certainly nearer.
     fn answer_band(key: f64, band: Band) -> Band;
+    /// For a leaf whose smallest computed squared scaled distance is
+    /// `least`, while the answer's band tops out at `hi`: a cut above which
+    /// a leaf item's computed squared scaled distance makes it certainly not
+    /// the answer (farther than the best so far, or than the leaf's nearest
+    /// item), given that no computed squared distance of this query
+    /// overflows (`finite`). `inf` when unsure.
+    #[inline(always)]
+    fn leaf_cut(_least: f64, _hi: f64, _finite: bool) -> f64 {
+        f64::INFINITY
+    }
     /// An upper bound (for the prune) of the exact scaled distance of an
     /// answer whose band tops out at `hi`.
     fn reach(hi: f64) -> f64;
@@ -99,6 +121,17 @@ impl Metric for Points {
     #[inline(always)]
     fn answer_band(key: f64, _: Band) -> Band {
         Band::around(key)
+    }
+    /// A point's candidate band starts at its `d2` unless `d2` overflowed,
+    /// so above `hi` it is rejected; above the band around `least` it is
+    /// certainly farther than the leaf's nearest point (see [`before`]).
+    #[inline(always)]
+    fn leaf_cut(least: f64, hi: f64, finite: bool) -> f64 {
+        if finite {
+            hi.min(Band::around(least).hi)
+        } else {
+            f64::INFINITY
+        }
     }
     #[inline(always)]
     fn reach(hi: f64) -> f64 {
@@ -222,6 +255,8 @@ struct Best<'c, M, C> {
     at: usize,
     band: Band,
     reach: f64,
+    /// No computed squared distance of this query can overflow.
+    finite: bool,
     counter: &'c mut C,
     metric: PhantomData<M>,
 }
@@ -236,6 +271,29 @@ impl<M: Metric, C: Counter> Visitor for Best<'_, M, C> {
     #[inline(always)]
     fn reach(&self) -> f64 {
         self.reach
+    }
+
+    #[inline(always)]
+    fn leaf(&mut self, tree: &SphereBvh, start: usize, d2: &[f64; LEAF], len: usize, least: f64) {
+        // Most leaves reached after the first hold no nearer point, and in
+        // the others one point is usually alone near the leaf's nearest.
+        let cut = M::leaf_cut(least, self.band.hi, self.finite);
+        if least > cut {
+            return;
+        }
+        // The lanes at or below the cut as bits (vector compares), then
+        // only those points, in order.
+        let mut wanted = 0u32;
+        for (k, &d) in d2.iter().enumerate() {
+            wanted |= ((d <= cut) as u32) << k;
+        }
+        // `len <= LEAF`; a leaf is never empty, but an empty one keeps no lane.
+        wanted &= u32::MAX.checked_shr((LEAF - len) as u32).unwrap_or(0);
+        while wanted != 0 {
+            let k = wanted.trailing_zeros() as usize;
+            wanted &= wanted - 1;
+            self.point(tree, start + k, d2[k]);
+        }
     }
 
     #[inline(always)]
@@ -327,6 +385,7 @@ impl SphereBvh {
             at: usize::MAX,
             band: Band::OPEN,
             reach: f64::INFINITY,
+            finite: no_overflow(self, q),
             counter,
             metric: PhantomData,
         };

@@ -1,5 +1,6 @@
 //! The branch-and-bound walk every query shares: a stack, the nearer child
-//! first, and the exam's prune `|c - q| - r >= d`, made conservative.
+//! first, and the exam's prune `|c - q| - r >= d` with a box bound beside
+//! it, both made conservative.
 //!
 //! All distances of one query are computed on differences scaled by a power
 //! of two `s` chosen from the query and the largest coordinate of the index,
@@ -8,7 +9,7 @@
 //! `2^-1075`, which the bounds absorb).
 
 use super::sphere::UNDERFLOW_DISTANCE;
-use super::{Child, Counter, LEAF, SphereBvh, sqrt};
+use super::{Child, Counter, LEAF, SphereBvh, Spheres, sqrt};
 use crate::predicates::grain::unit_pow2;
 use glam::DVec3;
 
@@ -37,17 +38,6 @@ fn pruned(d2: f64, r: f64, reach: f64) -> bool {
     d2 * PRUNE > t * t && d2 < f64::INFINITY
 }
 
-/// `true` when a point at least `|offset|` (computed, scaled) away cannot
-/// be within `reach`: the exact offset is at least `|offset| / (1 + u)`
-/// (one rounded subtraction; the scaling is exact, or off by `2^-1075` below
-/// `2^-1022`, which the `2^-529` in `reach` absorbs), and `reach` carries a
-/// factor `1 + 7u` over the exact distance it bounds.
-/// An overflowed (infinite) offset never prunes.
-#[inline(always)]
-fn beyond_plane(offset: f64, reach: f64) -> bool {
-    offset.abs() > reach && offset.abs() < f64::INFINITY
-}
-
 /// Stack capacity. Median splits halve every subtree, so a tree over at most
 /// `2^32` points is at most 28 levels deep above its leaves of 16 to 32
 /// points; the walk holds at most one entry per level (the far children on
@@ -64,11 +54,21 @@ pub(crate) trait Visitor {
     fn reach(&self) -> f64;
     /// Point `i` (tree order) at computed squared scaled distance `d2`.
     fn point(&mut self, tree: &SphereBvh, i: usize, d2: f64);
+    /// The `len` points of a leaf from tree position `start`, at computed
+    /// squared scaled distances `d2[..len]` (the lanes past `len` hold
+    /// anything); `least` is the smallest of them.
+    #[inline(always)]
+    fn leaf(&mut self, tree: &SphereBvh, start: usize, d2: &[f64; LEAF], len: usize, least: f64) {
+        let _ = least;
+        for (k, &d) in d2.iter().enumerate().take(len) {
+            self.point(tree, start + k, d);
+        }
+    }
 }
 
 /// The bound a visitor reports for an upper bound `hi` of a squared scaled
 /// distance: an upper bound of the distance, widened by the margins that
-/// [`LOWER`] leaves to this side (`sqrt` rounding, the subtraction of the
+/// [`PRUNE`] leaves to this side (`sqrt` rounding, the subtraction of the
 /// radius, and the `2^-535` underflow term, doubled).
 #[inline]
 pub(crate) fn reach_of(hi: f64) -> f64 {
@@ -81,73 +81,180 @@ pub(crate) fn scale_of(tree: &SphereBvh, q: DVec3) -> f64 {
     unit_pow2(tree.max_abs.max(q.abs().max_element()))
 }
 
-/// Computed squared norm of `(p - q) * s`.
+/// A far child still to visit: child `k` of node `parent` (where its
+/// sphere is), the subtree it is, and its box bound: `off` holds, per axis, the computed scaled offset of `q` from the
+/// last split plane on that axis between the root and the child that the
+/// child lies beyond (0 where none), and `box2` their computed squared norm.
+/// Its sphere is read from the parent when it is popped, against the reach
+/// of that moment.
+#[derive(Clone, Copy)]
+struct Pending {
+    parent: u32,
+    k: u32,
+    child: Subtree,
+    box2: f64,
+    off: [f64; 3],
+}
+
+/// A subtree: its node (when internal), its first point in tree order and
+/// its number of points, which makes it a leaf when at most [`LEAF`] (see
+/// [`Node`](super::Node)).
+#[derive(Clone, Copy)]
+struct Subtree {
+    at: u32,
+    start: u32,
+    count: u32,
+}
+
+/// Computed squared scaled distance from `q` to the centre of child `k` of
+/// `node`, and the child's scaled radius.
 #[inline(always)]
-fn dist2(p: DVec3, q: DVec3, s: f64) -> f64 {
-    let d = (p - q) * s;
-    d.x * d.x + d.y * d.y + d.z * d.z
+fn child_sphere(node: &Spheres, k: usize, q: DVec3, s: f64) -> (f64, f64) {
+    let (dx, dy, dz) = (
+        (node.cx[k] - q.x) * s,
+        (node.cy[k] - q.y) * s,
+        (node.cz[k] - q.z) * s,
+    );
+    (dx * dx + dy * dy + dz * dz, node.r[k] * s)
 }
 
 /// Walks `tree` (non-empty) from the root, handing every point of every
 /// leaf that may hold a wanted point to `v`.
+///
+/// Two lower bounds prune a subtree: its sphere, and (for points) its box,
+/// the distance from `q` to the intersection of the half-spaces of the split
+/// planes between the root and it (Arya and Mount's incremental distance).
+/// A subtree's points lie beyond each of those planes, so `|p - q|^2` is at
+/// least the sum over axes of the squared offset of `q` from one such plane
+/// per axis. That sum is computed like a squared distance, from one rounded
+/// difference per axis (exact zeros elsewhere): the error bound of [`PRUNE`]
+/// holds for it as it stands, with a radius of 0.
+///
+/// Points descend to the side of each split plane that holds `q`, whose box
+/// is the parent's, so only its sphere is tested; the far side is pushed
+/// when its box cannot be pruned yet, and its sphere tested when popped.
+/// Balls may straddle a split plane: both children's spheres are measured
+/// and the nearer centre goes first, with no box bound.
 #[inline]
 pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64, v: &mut V) {
-    let mut stack = [(0u32, 0u32, 0.0f64, 0.0f64); STACK];
+    let none = Pending {
+        parent: 0,
+        k: 0,
+        child: Subtree {
+            at: 0,
+            start: 0,
+            count: 0,
+        },
+        box2: 0.0,
+        off: [0.0; 3],
+    };
+    let mut stack = [none; STACK];
     let mut top = 0;
     let points = tree.radii.is_empty();
-    let mut next = (
-        root.link,
-        root.len,
-        dist2(root.center, q, s),
-        root.radius * s,
-    );
+    let qs = [q.x, q.y, q.z];
+    // `spheres` has an entry per node; a missing one (never) prunes nothing.
+    const NONE: Spheres = Spheres {
+        cx: [0.0; 2],
+        cy: [0.0; 2],
+        cz: [0.0; 2],
+        r: [f64::INFINITY; 2],
+    };
+    let spheres = |i: u32| tree.spheres.get(i as usize).unwrap_or(&NONE);
+    // The subtree being entered, which has passed both prunes, and its
+    // box's offsets.
+    let mut cur = Subtree {
+        at: root.link,
+        start: 0,
+        count: tree.len() as u32,
+    };
+    let mut off = [0.0; 3];
     loop {
-        let (link, len, d2, r) = next;
-        if !pruned(d2, r, v.reach()) {
-            v.counter().node();
-            if len == 0 {
-                let node = &tree.nodes[link as usize];
-                // Both children at once, lane by lane (two-wide vector code).
-                let lane = |k: usize| {
-                    let d = [
-                        (node.cx[k] - q.x) * s,
-                        (node.cy[k] - q.y) * s,
-                        (node.cz[k] - q.z) * s,
-                    ];
-                    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2], node.r[k] * s)
-                };
-                let ((da, ra), (db, rb)) = (lane(0), lane(1));
-                // Points: the side of the split plane `q` is on comes first,
-                // and the other side is at least `|offset|` away. Balls may
-                // straddle the plane: nearer centre first, no plane bound.
-                let qa = match node.axis {
-                    0 => q.x,
-                    1 => q.y,
-                    _ => q.z,
-                };
-                let offset = if points { (qa - node.split) * s } else { 0.0 };
-                let first = if points { offset <= 0.0 } else { da <= db };
-                let (near, far) = if first { (0, 1) } else { (1, 0) };
-                let (dn, rn, df, rf) = if near == 0 {
-                    (da, ra, db, rb)
-                } else {
-                    (db, rb, da, ra)
-                };
-                let reach = v.reach();
-                if !pruned(df, rf, reach) && !beyond_plane(offset, reach) {
-                    stack[top] = (node.link[far], node.len[far], df, rf);
+        v.counter().node();
+        let descend = if cur.count as usize > LEAF {
+            let here = cur.at;
+            let node = &tree.nodes[here as usize];
+            let half = cur.count / 2;
+            let children = [
+                Subtree {
+                    at: here + 1,
+                    start: cur.start,
+                    count: half,
+                },
+                Subtree {
+                    at: node.right,
+                    start: cur.start + half,
+                    count: cur.count - half,
+                },
+            ];
+            let reach = v.reach();
+            // Until the first leaf, nothing is pruned: no sphere is tested.
+            let open = reach == f64::INFINITY;
+            let near = if points {
+                let axis = (node.axis as usize).min(2);
+                let offset = (qs[axis] - node.split) * s;
+                let near = (offset > 0.0) as usize;
+                let mut far_off = off;
+                far_off[axis] = offset;
+                let far_box2 =
+                    far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
+                if open || !pruned(far_box2, 0.0, reach) {
+                    stack[top] = Pending {
+                        parent: here,
+                        k: 1 - near as u32,
+                        child: children[1 - near],
+                        box2: far_box2,
+                        off: far_off,
+                    };
                     top += 1;
                 }
-                next = (node.link[near], node.len[near], dn, rn);
+                near
+            } else {
+                let ((da, ra), (db, rb)) = (
+                    child_sphere(spheres(here), 0, q, s),
+                    child_sphere(spheres(here), 1, q, s),
+                );
+                let (near, df, rf) = if da <= db { (0, db, rb) } else { (1, da, ra) };
+                if !pruned(df, rf, reach) {
+                    stack[top] = Pending {
+                        parent: here,
+                        k: 1 - near as u32,
+                        child: children[1 - near],
+                        ..none
+                    };
+                    top += 1;
+                }
+                near
+            };
+            cur = children[near];
+            open || {
+                let (dn, rn) = child_sphere(spheres(here), near, q, s);
+                !pruned(dn, rn, reach)
+            }
+        } else {
+            leaf(tree, cur.start as usize, cur.count as usize, q, s, v);
+            false
+        };
+        if descend {
+            continue;
+        }
+        loop {
+            if top == 0 {
+                return;
+            }
+            top -= 1;
+            let p = &stack[top];
+            let reach = v.reach();
+            if pruned(p.box2, 0.0, reach) {
                 continue;
             }
-            leaf(tree, link as usize, len as usize, q, s, v);
+            let k = p.k as usize & 1;
+            let (d2, r) = child_sphere(spheres(p.parent), k, q, s);
+            if pruned(d2, r, reach) {
+                continue;
+            }
+            (cur, off) = (p.child, p.off);
+            break;
         }
-        if top == 0 {
-            return;
-        }
-        top -= 1;
-        next = stack[top];
     }
 }
 
@@ -156,18 +263,47 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
 #[inline(always)]
 fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64, v: &mut V) {
     v.counter().distances(len);
-    let end = start + len.min(LEAF);
-    let (xs, ys, zs) = (
-        &tree.xs[start..end],
-        &tree.ys[start..end],
-        &tree.zs[start..end],
-    );
+    // A whole leaf's worth of lanes, whatever `len`: a fixed trip count
+    // vectorizes without a remainder loop. The coordinate arrays carry
+    // `LEAF` points of padding, so the lanes past `len` read the next
+    // leaf's points (or the padding) and are ignored.
+    let end = start + LEAF;
+    let (Some(xs), Some(ys), Some(zs)) = (
+        tree.xs.get(start..end),
+        tree.ys.get(start..end),
+        tree.zs.get(start..end),
+    ) else {
+        return;
+    };
+    let len = len.min(LEAF);
+    // 0 for the leaf's lanes, `inf` past them.
+    let mask = &LANE_MASK[LEAF - len..][..LEAF];
     let mut d2 = [0.0f64; LEAF];
-    for (k, d) in d2.iter_mut().enumerate().take(xs.len()) {
-        let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
-        *d = dx * dx + dy * dy + dz * dz;
+    // The smallest distance of the leaf too, in four running minima that
+    // stay in vector registers (`<`, not `f64::min`: no NaN here).
+    let mut least = [f64::INFINITY; 4];
+    for c in 0..LEAF / 4 {
+        for (j, m) in least.iter_mut().enumerate() {
+            let k = 4 * c + j;
+            let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
+            let d = dx * dx + dy * dy + dz * dz;
+            d2[k] = d;
+            let x = d + mask[k];
+            *m = if x < *m { x } else { *m };
+        }
     }
-    for (k, &d) in d2.iter().enumerate().take(xs.len()) {
-        v.point(tree, start + k, d);
-    }
+    let least = least[0].min(least[1]).min(least[2].min(least[3]));
+    v.leaf(tree, start, &d2, len, least);
 }
+
+/// Added to a leaf's lanes: the lanes of `LANE_MASK[LEAF - len..][..LEAF]`
+/// are 0 for the `len` points of the leaf and `inf` past them.
+static LANE_MASK: [f64; 2 * LEAF] = {
+    let mut m = [0.0; 2 * LEAF];
+    let mut k = LEAF;
+    while k < 2 * LEAF {
+        m[k] = f64::INFINITY;
+        k += 1;
+    }
+    m
+};
