@@ -47,24 +47,26 @@
 //! over all [`LEAF`] lanes; the nearest-point query rejects a leaf whose
 //! least distance is certainly beyond the best, and otherwise only looks at
 //! the lanes near that least distance. At 10^6 uniform points a query visits
-//! 21 nodes and computes 70 distances (the report's `nearest` notes; before
-//! the box bound: 40 and 94).
+//! 21.6 nodes and computes 71 distances (the report's `nearest` notes;
+//! before the box bound: 40 and 94).
 //!
 //! The nodes are laid out for memory, which bounds query time at 10^6
 //! points more than instructions do: 16 bytes each (split, second child,
 //! axis) in preorder, every child's point range derived from its subtree's
-//! size, and the children's spheres apart (64 bytes per node, read only
-//! when tested); each record is aligned to its size.
+//! size, the children's spheres apart (64 bytes per node, read only
+//! when tested), each record aligned to its size, and the points in blocks
+//! of 8 per coordinate with every leaf starting on a block, so a leaf's 32
+//! lanes are 4 whole cache lines per coordinate.
 //!
 //! Tightness, from `cargo test --test bvh leaf_spheres -- --nocapture`: leaf
-//! radii average 1.09x (uniform points) and 1.07x (clustered points) the
+//! radii average 1.07x (uniform points) and 1.07x (clustered points) the
 //! radius of the minimal enclosing sphere of the same points.
 //!
 //! Memory ([`SphereBvh::memory_bytes`]): 28 bytes per point (coordinates and
 //! original index, the coordinates in cache-line blocks of 8 and padded by
 //! [`LEAF`] points) plus, per
 //! internal node (one per 16 to 32 points), 16 bytes of node and 64 of
-//! spheres: 30.6 to 32.2 bytes per point in all (the report's
+//! spheres: 30.6 to 31.9 bytes per point in all (the report's
 //! `nearest_build`).
 
 mod batch;
