@@ -3,8 +3,9 @@
 //! bottom-up (a leaf's around its points, a parent's around its children's).
 
 use super::sphere::{merge, norm2_root_up, sum_up, unscale_up};
-use super::{Child, LEAF, Node, SphereBvh, Spheres};
+use super::{Child, LEAF, Lanes, Node, SphereBvh, Spheres, first_part};
 use crate::predicates::grain::unit_pow2;
+use alloc::vec;
 use alloc::vec::Vec;
 use glam::DVec3;
 
@@ -50,13 +51,14 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> Spher
     }
 }
 
-/// One coordinate of every point, then [`LEAF`] zeros, so that a leaf's
-/// distances can be computed over a whole leaf's worth of lanes (see
-/// `traverse::leaf`).
-fn padded(coordinates: impl ExactSizeIterator<Item = f64>) -> Vec<f64> {
-    let mut v = Vec::with_capacity(coordinates.len() + LEAF);
-    v.extend(coordinates);
-    v.extend([0.0; LEAF]);
+/// One coordinate of every point in blocks of 8, then [`LEAF`] points of
+/// zeros, so that a leaf's distances can be computed over a whole leaf's
+/// worth of lanes (see `traverse::leaf`).
+fn padded(coordinates: impl ExactSizeIterator<Item = f64>) -> Vec<Lanes> {
+    let mut v = vec![Lanes([0.0; 8]); coordinates.len().div_ceil(8) + LEAF / 8];
+    for (i, c) in coordinates.enumerate() {
+        v[i / 8].0[i % 8] = c;
+    }
     v
 }
 
@@ -89,7 +91,7 @@ fn subtree(
     }
     // Halves of the extent: `hi - lo` could overflow.
     let axis = (hi * 0.5 - lo * 0.5).max_position();
-    let mid = entries.len() / 2;
+    let mid = first_part(entries.len());
     entries.select_nth_unstable_by(mid, |a, b| a.p[axis].total_cmp(&b.p[axis]));
     let split = entries[mid].p[axis];
     let (left, right) = entries.split_at_mut(mid);

@@ -25,9 +25,10 @@
 //! squared away with case analysis, leaving integer polynomials of degree 4).
 //!
 //! # Spheres, memory and build
-//! Built top-down by median splits along the widest axis (in parallel with
-//! rayon above 32,768 points under the `rayon` feature), into leaves of 16
-//! to 32 points. A leaf's sphere is centred on its points' bounding box and
+//! Built top-down by median splits along the widest axis (the first half
+//! rounded to a multiple of 8 points, so that every leaf starts on a cache
+//! line of each coordinate array; in parallel with rayon above 32,768
+//! points under the `rayon` feature), into leaves of 16 to 32 points. A leaf's sphere is centred on its points' bounding box and
 //! encloses them. A parent's sphere encloses every point below it: it is the
 //! smaller of the smallest sphere around its two children's spheres and the
 //! sphere around its own points' bounding-box centre. The second is usually
@@ -46,23 +47,26 @@
 //! over all [`LEAF`] lanes; the nearest-point query rejects a leaf whose
 //! least distance is certainly beyond the best, and otherwise only looks at
 //! the lanes near that least distance. At 10^6 uniform points a query visits
-//! 21 nodes and computes 70 distances (the report's `nearest` notes; before
-//! the box bound: 40 and 94).
+//! 21.6 nodes and computes 71 distances (the report's `nearest` notes;
+//! before the box bound: 40 and 94).
 //!
 //! The nodes are laid out for memory, which bounds query time at 10^6
 //! points more than instructions do: 16 bytes each (split, second child,
 //! axis) in preorder, every child's point range derived from its subtree's
-//! size, and the children's spheres apart (64 bytes per node, read only
-//! when tested); each record is aligned to its size.
+//! size, the children's spheres apart (64 bytes per node, read only
+//! when tested), each record aligned to its size, and the points in blocks
+//! of 8 per coordinate with every leaf starting on a block, so a leaf's 32
+//! lanes are 4 whole cache lines per coordinate.
 //!
 //! Tightness, from `cargo test --test bvh leaf_spheres -- --nocapture`: leaf
-//! radii average 1.09x (uniform points) and 1.07x (clustered points) the
+//! radii average 1.07x (uniform points) and 1.07x (clustered points) the
 //! radius of the minimal enclosing sphere of the same points.
 //!
 //! Memory ([`SphereBvh::memory_bytes`]): 28 bytes per point (coordinates and
-//! original index, the coordinates padded by [`LEAF`] points) plus, per
+//! original index, the coordinates in cache-line blocks of 8 and padded by
+//! [`LEAF`] points) plus, per
 //! internal node (one per 16 to 32 points), 16 bytes of node and 64 of
-//! spheres: 30.6 to 32.2 bytes per point in all (the report's
+//! spheres: 30.6 to 31.9 bytes per point in all (the report's
 //! `nearest_build`).
 
 mod batch;
@@ -84,6 +88,22 @@ use glam::DVec3;
 /// current walk, 16 again took more time at 10^6 points (twice the nodes to
 /// fetch), and 64 took 35% more instructions for no time gained.
 pub(crate) const LEAF: usize = 32;
+
+/// Points in the first child of a subtree of `count > LEAF` points: half,
+/// rounded to a multiple of 8, so that every leaf starts on a multiple of 8
+/// points, a cache line of each coordinate array (see [`Lanes`]). The build
+/// splits by it and the walk derives the children's ranges from it.
+#[inline(always)]
+pub(crate) fn first_part(count: usize) -> usize {
+    (count / 2 + 4) & !7
+}
+
+/// Eight consecutive values of one coordinate, aligned to a cache line: a
+/// leaf (which starts on a multiple of 8 points, see [`first_part`]) reads
+/// whole lines, four per coordinate for its 32 lanes.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
+pub(crate) struct Lanes(pub [f64; 8]);
 
 /// Points per index the tree can hold: indices are `u32`.
 pub const MAX_POINTS: usize = u32::MAX as usize;
@@ -157,9 +177,9 @@ pub(crate) struct Child {
 /// An internal node as the walk reads it at every step: the plane that
 /// split its points and where its second child is. Nodes are in preorder,
 /// so an internal first child is the next node; and a subtree's points are
-/// a range whose split is fixed by its size (the first child takes half,
-/// rounded down; a subtree of at most [`LEAF`] points is a leaf), so the walk
-/// derives every child's range and kind as it goes. Its children's spheres
+/// a range whose split is fixed by its size (the first child takes
+/// [`first_part`]; a subtree of at most [`LEAF`] points is a leaf), so the
+/// walk derives every child's range and kind as it goes. Its children's spheres
 /// live apart, in [`Spheres`]: the first descent of a query reads no
 /// sphere, and 16-byte nodes keep the path it walks small.
 #[derive(Clone, Copy, Debug)]
@@ -201,9 +221,9 @@ pub(crate) struct Spheres {
 #[derive(Clone, Debug)]
 pub struct SphereBvh {
     /// The points, reordered so that every leaf is a contiguous range.
-    pub(crate) xs: Vec<f64>,
-    pub(crate) ys: Vec<f64>,
-    pub(crate) zs: Vec<f64>,
+    pub(crate) xs: Vec<Lanes>,
+    pub(crate) ys: Vec<Lanes>,
+    pub(crate) zs: Vec<Lanes>,
     /// The original index of each reordered point.
     pub(crate) index: Vec<u32>,
     /// Item radii in tree order, for an index built from spheres; empty for
@@ -314,7 +334,7 @@ impl SphereBvh {
     /// point) and internal nodes (80 each with their children's spheres, one
     /// per 16 to 32 points).
     pub fn memory_bytes(&self) -> usize {
-        (self.xs.capacity() + self.ys.capacity() + self.zs.capacity()) * 8
+        (self.xs.capacity() + self.ys.capacity() + self.zs.capacity()) * 64
             + self.index.capacity() * 4
             + self.radii.capacity() * 8
             + self.nodes.capacity() * core::mem::size_of::<Node>()
@@ -369,7 +389,7 @@ impl SphereBvh {
                 else {
                     continue;
                 };
-                let half = count / 2;
+                let half = first_part(count as usize) as u32;
                 let sphere = |k: usize| (DVec3::new(sp.cx[k], sp.cy[k], sp.cz[k]), sp.r[k]);
                 let ((c1, r1), (c0, r0)) = (sphere(1), sphere(0));
                 if top + 2 <= stack.len() {
@@ -384,7 +404,8 @@ impl SphereBvh {
     /// The `i`-th point in tree order.
     #[inline(always)]
     pub(crate) fn point(&self, i: usize) -> DVec3 {
-        DVec3::new(self.xs[i], self.ys[i], self.zs[i])
+        let (b, k) = (i / 8, i % 8);
+        DVec3::new(self.xs[b].0[k], self.ys[b].0[k], self.zs[b].0[k])
     }
 
     /// The answer for tree position `i` and query `q`.

@@ -9,7 +9,7 @@
 //! `2^-1075`, which the bounds absorb).
 
 use super::sphere::UNDERFLOW_DISTANCE;
-use super::{Child, Counter, LEAF, SphereBvh, Spheres, sqrt};
+use super::{Child, Counter, LEAF, Lanes, SphereBvh, Spheres, first_part, sqrt};
 use crate::predicates::grain::unit_pow2;
 use glam::DVec3;
 
@@ -38,9 +38,9 @@ fn pruned(d2: f64, r: f64, reach: f64) -> bool {
     d2 * PRUNE > t * t && d2 < f64::INFINITY
 }
 
-/// Stack capacity. Median splits halve every subtree, so a tree over at most
-/// `2^32` points is at most 28 levels deep above its leaves of 16 to 32
-/// points; the walk holds at most one entry per level (the far children on
+/// Stack capacity. Median splits halve every subtree (to within 4 points),
+/// so a tree over at most `2^32` points is at most 28 levels deep above its
+/// leaves of 16 to 32 points; the walk holds at most one entry per level (the far children on
 /// the current path).
 const STACK: usize = 32;
 
@@ -173,7 +173,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
         let descend = if cur.count as usize > LEAF {
             let here = cur.at;
             let node = &tree.nodes[here as usize];
-            let half = cur.count / 2;
+            let half = first_part(cur.count as usize) as u32;
             let children = [
                 Subtree {
                     at: here + 1,
@@ -264,17 +264,27 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
 fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64, v: &mut V) {
     v.counter().distances(len);
     // A whole leaf's worth of lanes, whatever `len`: a fixed trip count
-    // vectorizes without a remainder loop. The coordinate arrays carry
-    // `LEAF` points of padding, so the lanes past `len` read the next
-    // leaf's points (or the padding) and are ignored.
-    let end = start + LEAF;
-    let (Some(xs), Some(ys), Some(zs)) = (
-        tree.xs.get(start..end),
-        tree.ys.get(start..end),
-        tree.zs.get(start..end),
-    ) else {
+    // vectorizes without a remainder loop. A leaf starts on a block of 8
+    // (see `first_part`), and the coordinate arrays carry `LEAF` points of
+    // padding, so the lanes past `len` read the next leaf's points (or the
+    // padding) and are ignored.
+    let b = start / 8;
+    fn block(a: &[Lanes], b: usize) -> Option<&[Lanes; LEAF / 8]> {
+        a.get(b..b + LEAF / 8)?.try_into().ok()
+    }
+    let (Some(xs), Some(ys), Some(zs)) =
+        (block(&tree.xs, b), block(&tree.ys, b), block(&tree.zs, b))
+    else {
         return;
     };
+    if start % 8 != 0 {
+        // Never: every leaf starts on a block. Correct, if slow, all the same.
+        for i in start..start + len.min(LEAF) {
+            let d = (tree.point(i) - q) * s;
+            v.point(tree, i, d.x * d.x + d.y * d.y + d.z * d.z);
+        }
+        return;
+    }
     let len = len.min(LEAF);
     // 0 for the leaf's lanes, `inf` past them.
     let mask = &LANE_MASK[LEAF - len..][..LEAF];
@@ -282,13 +292,17 @@ fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64
     // The smallest distance of the leaf too, in four running minima that
     // stay in vector registers (`<`, not `f64::min`: no NaN here).
     let mut least = [f64::INFINITY; 4];
-    for c in 0..LEAF / 4 {
-        for (j, m) in least.iter_mut().enumerate() {
-            let k = 4 * c + j;
-            let (dx, dy, dz) = ((xs[k] - q.x) * s, (ys[k] - q.y) * s, (zs[k] - q.z) * s);
+    for (blk, ((bx, by), bz)) in xs.iter().zip(ys).zip(zs).enumerate() {
+        for j in 0..8 {
+            let k = 8 * blk + j;
+            let (dx, dy, dz) = (
+                (bx.0[j] - q.x) * s,
+                (by.0[j] - q.y) * s,
+                (bz.0[j] - q.z) * s,
+            );
             let d = dx * dx + dy * dy + dz * dz;
             d2[k] = d;
-            let x = d + mask[k];
+            let (m, x) = (&mut least[j % 4], d + mask[k]);
             *m = if x < *m { x } else { *m };
         }
     }
