@@ -95,7 +95,10 @@ fn far(rng: &mut SplitMix64) -> Case {
 /// Rays along the axis direction exactly (scaled by 2^k): inside, outside,
 /// or on the surface (every t; the first hit is t = 0).
 fn parallel(rng: &mut SplitMix64) -> Case {
-    let a = cube(rng, 2.0).map(|x| (x * 8.0).round() / 8.0 + 0.125);
+    let mut a = cube(rng, 2.0).map(|x| (x * 8.0).round() / 8.0);
+    if a == [0.0; 3] {
+        a[2] = 0.125;
+    }
     let k = 2f64.powi((rng.next_u64() % 9) as i32 - 4);
     let p = cube(rng, 2.0).map(f64::round);
     // The surface point p + e (e perpendicular to a, |e| = r) is exact for
