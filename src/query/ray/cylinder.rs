@@ -5,7 +5,7 @@ use super::quadratic::{
     SMALL_SPAN, U, certified_roots, circle_coeffs, cross_magnitudes, eval_circle, exact_roots,
     in_filter_range, norm1,
 };
-use super::{Hit, RayCast, first_in, unit_or};
+use super::{Hit, RayCast, first_hit, first_in, unit_or};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -140,12 +140,8 @@ impl RayCast for Cylinder {
     /// `t = 0`.
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let t = first_in(self.line_roots(ray), range)?;
-        let point = ray.at(t);
-        Some(Hit {
-            t,
-            point,
-            normal: self.normal_at(point, -ray.direction()),
+        first_hit(self.line_roots(ray), ray, range, |point| {
+            self.normal_at(point, -ray.direction())
         })
     }
 

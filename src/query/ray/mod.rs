@@ -69,6 +69,24 @@ pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
     }
 }
 
+/// The first hit among a surface's `roots` inside `range`, its normal
+/// from the hit point: what the quadrics' casts share.
+#[inline(always)]
+pub(crate) fn first_hit(
+    roots: Roots,
+    ray: &Ray,
+    range: Interval,
+    normal: impl FnOnce(DVec3) -> DVec3,
+) -> Option<Hit> {
+    let t = first_in(roots, range)?;
+    let point = ray.at(t);
+    Some(Hit {
+        t,
+        point,
+        normal: normal(point),
+    })
+}
+
 /// `v` normalized, or `fallback` normalized when `v` is zero or too small
 /// to normalize (a point sphere, a cone's apex).
 #[inline]

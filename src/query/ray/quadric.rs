@@ -1,7 +1,7 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
 use super::quadratic::{Coeffs, SMALL_SPAN, U, certified_roots, exact_roots, in_filter_range};
-use super::{Hit, RayCast, first_in, unit_or};
+use super::{Hit, RayCast, first_hit, first_in, unit_or};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -20,8 +20,8 @@ impl Quadric {
     /// Every real root in `t` of the quadric's equation at `o + t d`, over
     /// the whole line, sorted. The count is exact (a zero leading
     /// coefficient gives the linear root; an identically zero polynomial
-    /// gives [`Roots::All`]); roots are within 16 ulps of the exact roots
-    /// (5 where the exact stage runs).
+    /// gives [`Roots::All`]); roots carry the accuracy of
+    /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
     pub fn line_roots(&self, ray: &Ray) -> Roots {
         let (o, d) = (ray.origin(), ray.direction());
         if let Some(roots) = filtered(&self.k, o, d) {
@@ -172,12 +172,8 @@ impl RayCast for Quadric {
     /// (against the ray where the gradient vanishes, as at a cone's apex).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let t = first_in(self.line_roots(ray), range)?;
-        let point = ray.at(t);
-        Some(Hit {
-            t,
-            point,
-            normal: unit_or(self.gradient(point), -ray.direction()),
+        first_hit(self.line_roots(ray), ray, range, |point| {
+            unit_or(self.gradient(point), -ray.direction())
         })
     }
 

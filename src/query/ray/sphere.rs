@@ -3,7 +3,7 @@
 use super::quadratic::{
     SMALL_SPAN, U, certified_roots, circle_coeffs, eval_circle, exact_roots, in_filter_range, norm1,
 };
-use super::{Hit, RayCast, first_in, unit_or};
+use super::{Hit, RayCast, first_hit, first_in, unit_or};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -101,12 +101,8 @@ impl RayCast for Sphere {
     /// (for radius zero: against the ray).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let t = first_in(self.line_roots(ray), range)?;
-        let point = ray.at(t);
-        Some(Hit {
-            t,
-            point,
-            normal: unit_or(point - self.center, -ray.direction()),
+        first_hit(self.line_roots(ray), ray, range, |point| {
+            unit_or(point - self.center, -ray.direction())
         })
     }
 
