@@ -3505,49 +3505,53 @@ const char* const kRayHeaderQuad =
     "# to the neighbouring doubles. Every root is a normal double or exactly 0; cases whose two\n"
     "# distinct roots round to the same double are left out (the format promises t0 < t1).\n";
 
+// Writes <outdir>/<kind>.txt: the header, then the cases `gen` emits.
+void write_ray_file(const std::string& outdir, const std::string& kind, const std::string& header,
+                    void (*gen)(RayWriter&)) {
+  RayWriter w(kind, header);
+  gen(w);
+  w.finish(outdir + "/" + kind + ".txt");
+}
+
 void gen_ray_sphere_files(const std::string& outdir) {
-  RayWriter w("ray_sphere",
-              "# Line: ox oy oz dx dy dz cx cy cz r n [t0 t1]; the line o + t d against |x - c| = r.\n"
-              "# n = 1 (tangent) writes the double root twice.\n" +
-                  std::string(kRayHeaderQuad) +
-                  "# The count is checked against CGAL's squared line-point distance (rational kernel).\n");
-  gen_ray_sphere(w);
-  w.finish(outdir + "/ray_sphere.txt");
+  write_ray_file(outdir, "ray_sphere",
+                 "# Line: ox oy oz dx dy dz cx cy cz r n [t0 t1]; the line o + t d against |x - c| = r.\n"
+                 "# n = 1 (tangent) writes the double root twice.\n" +
+                     std::string(kRayHeaderQuad) +
+                     "# The count is checked against CGAL's squared line-point distance (rational kernel).\n",
+                 gen_ray_sphere);
 }
 
 void gen_ray_cylinder_files(const std::string& outdir) {
-  RayWriter w("ray_cylinder",
-              "# Line: ox oy oz dx dy dz px py pz ax ay az r n [t0 t1]; the line o + t d against\n"
-              "# |(x - p) x a|^2 = r^2 |a|^2. n = 1 (tangent) writes the double root twice; n = inf: the\n"
-              "# line lies on the cylinder.\n" +
-                  std::string(kRayHeaderQuad) +
-                  "# The count is checked against CGAL's squared line-line distance (rational kernel).\n");
-  gen_ray_cylinder(w);
-  w.finish(outdir + "/ray_cylinder.txt");
+  write_ray_file(outdir, "ray_cylinder",
+                 "# Line: ox oy oz dx dy dz px py pz ax ay az r n [t0 t1]; the line o + t d against\n"
+                 "# |(x - p) x a|^2 = r^2 |a|^2. n = 1 (tangent) writes the double root twice; n = inf: the\n"
+                 "# line lies on the cylinder.\n" +
+                     std::string(kRayHeaderQuad) +
+                     "# The count is checked against CGAL's squared line-line distance (rational kernel).\n",
+                 gen_ray_cylinder);
 }
 
 void gen_ray_quadric_files(const std::string& outdir) {
-  RayWriter w("ray_quadric",
-              "# Line: ox oy oz dx dy dz A B C D E F G H I J n [t0 [t1]]; the line o + t d against\n"
-              "# A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0. Exactly n roots\n"
-              "# follow (one for a double root or degree one); n = inf: the polynomial is zero.\n" +
-                  std::string(kRayHeaderQuad));
-  gen_ray_quadric(w);
-  w.finish(outdir + "/ray_quadric.txt");
+  write_ray_file(outdir, "ray_quadric",
+                 "# Line: ox oy oz dx dy dz A B C D E F G H I J n [t0 [t1]]; the line o + t d against\n"
+                 "# A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0. Exactly n roots\n"
+                 "# follow (one for a double root or degree one); n = inf: the polynomial is zero.\n" +
+                     std::string(kRayHeaderQuad),
+                 gen_ray_quadric);
 }
 
 void gen_ray_triangle_files(const std::string& outdir) {
-  RayWriter w("ray_triangle",
-              "# Line: ox oy oz dx dy dz v0x v0y v0z v1x v1y v1z v2x v2y v2z hit [t]; the ray o + t d,\n"
-              "# t >= 0, against the closed triangle. hit 1: one common point, t its exact parameter\n"
-              "# rounded to nearest (MPFR, correctly rounded); hit 2: the ray lies in the triangle's\n"
-              "# plane and touches it; 0: no common point. Epeck's do_intersect(Ray_3, Triangle_3),\n"
-              "# checked against the rational kernel and a signed-volume (or in-plane edge) test; t\n"
-              "# checked against the rational kernel's intersection point. A degenerate triangle\n"
-              "# (collinear vertices) is the segment between its farthest vertices (or a point): every\n"
-              "# line through it lies in a plane containing it, so touching it is hit 2.\n");
-  gen_ray_triangle(w);
-  w.finish(outdir + "/ray_triangle.txt");
+  write_ray_file(outdir, "ray_triangle",
+                 "# Line: ox oy oz dx dy dz v0x v0y v0z v1x v1y v1z v2x v2y v2z hit [t]; the ray o + t d,\n"
+                 "# t >= 0, against the closed triangle. hit 1: one common point, t its exact parameter\n"
+                 "# rounded to nearest (MPFR, correctly rounded); hit 2: the ray lies in the triangle's\n"
+                 "# plane and touches it; 0: no common point. Epeck's do_intersect(Ray_3, Triangle_3),\n"
+                 "# checked against the rational kernel and a signed-volume (or in-plane edge) test; t\n"
+                 "# checked against the rational kernel's intersection point. A degenerate triangle\n"
+                 "# (collinear vertices) is the segment between its farthest vertices (or a point): every\n"
+                 "# line through it lies in a plane containing it, so touching it is hit 2.\n",
+                 gen_ray_triangle);
   std::fprintf(stderr,
                "ray_triangle: Epick's do_intersect(Ray_3(o, d), Triangle_3) (o + d rounded) is wrong on %d of %d "
                "non-degenerate cases; on %d more, o + d rounds to o\n",
