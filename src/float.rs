@@ -28,3 +28,58 @@ pub(crate) fn fma(x: f64, y: f64, z: f64) -> f64 {
         libm::fma(x, y, z)
     }
 }
+
+/// `a + b` as `(s, e)` with `s = fl(a + b)` and `s + e = a + b` exactly
+/// (Knuth's TwoSum; Higham, *Accuracy and Stability*, 2nd ed., §4.3), for
+/// any finite inputs whose sum does not overflow.
+#[inline(always)]
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a * b` as `(p, e)` with `p = fl(a b)` and `p + e = a b` exactly, when
+/// the product neither overflows nor underflows (the error of a product is
+/// a float then; Higham §4.3). One `fma`: a single instruction where
+/// [`with_fma`] has enabled it.
+#[inline(always)]
+pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, fma(a, b, -p))
+}
+
+/// A computation to run compiled with hardware FMA where the CPU has it.
+/// `run` must be `#[inline(always)]`, so that its body, and the `fma`
+/// calls in it, are compiled inside [`with_fma`]'s FMA-enabled copy.
+pub(crate) trait FmaKernel {
+    /// What the computation returns.
+    type Output;
+    /// The computation.
+    fn run(&self) -> Self::Output;
+}
+
+/// Runs `k` in a copy compiled with the `fma` target feature when the
+/// build does not enable it already and the CPU has it (detected once and
+/// cached by `std`), so an `fma` is one instruction instead of a call to
+/// the C library's `fma`. The results are the same either way: `fma`
+/// rounds once in both.
+#[inline(always)]
+pub(crate) fn with_fma<K: FmaKernel>(k: &K) -> K::Output {
+    #[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "fma")))]
+    {
+        if std::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU supports FMA, checked just above.
+            return unsafe { run_with_fma(k) };
+        }
+    }
+    k.run()
+}
+
+/// # Safety
+/// The CPU must support the `fma` feature.
+#[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "fma")))]
+#[target_feature(enable = "fma")]
+unsafe fn run_with_fma<K: FmaKernel>(k: &K) -> K::Output {
+    k.run()
+}

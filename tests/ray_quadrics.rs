@@ -356,3 +356,17 @@ fn fuzz_findings() {
     assert!(matches!(s.line_roots(&ray), Roots::Two(a, b) if a.is_infinite() && b.is_infinite()));
     assert!(s.cast(&ray, Interval::FORWARD).is_none());
 }
+
+/// Regression (found by the `ray_quadrics` fuzz target): origin, point and
+/// radius all zero left the exact stage's grain empty, and its span
+/// overflowed in debug builds.
+#[test]
+fn all_zero_position_data_reaches_the_exact_stage_safely() {
+    let ray = Ray::new([0.0, 0.0, 0.0], [1.0, 2.0, 3.0]).unwrap();
+    // The line meets the zero-radius cylinder (its axis) and sphere (a
+    // point) only at t = 0.
+    let c = Cylinder::new([0.0, 0.0, 0.0], [0.0, 1.0, 0.0], 0.0).unwrap();
+    assert_eq!(c.line_roots(&ray), Roots::One(0.0));
+    let s = Sphere::new([0.0, 0.0, 0.0], 0.0).unwrap();
+    assert_eq!(s.line_roots(&ray), Roots::One(0.0));
+}

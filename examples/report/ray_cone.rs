@@ -131,7 +131,7 @@ pub fn family() -> RayFamily<Case> {
         oracle,
         methods: vec![
             method("exactray", |c: &Case| {
-                c.cone.cast(&c.ray, Interval::FORWARD).map(|h| h.t)
+                c.cone.cast_t(&c.ray, Interval::FORWARD)
             }),
             method("naive", naive),
             method("parry3d", parry),

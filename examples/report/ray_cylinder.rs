@@ -151,7 +151,7 @@ pub fn family() -> RayFamily<Case> {
         oracle,
         methods: vec![
             method("exactray", |c: &Case| {
-                c.cylinder.cast(&c.ray, Interval::FORWARD).map(|h| h.t)
+                c.cylinder.cast_t(&c.ray, Interval::FORWARD)
             }),
             method("naive", naive),
             method("parry3d", parry),

@@ -153,7 +153,7 @@ pub fn family() -> RayFamily<Case> {
         oracle,
         methods: vec![
             method("exactray", |c: &Case| {
-                c.quadric.cast(&c.ray, Interval::FORWARD).map(|h| h.t)
+                c.quadric.cast_t(&c.ray, Interval::FORWARD)
             }),
             method("naive", naive),
         ],

@@ -139,7 +139,7 @@ pub fn family() -> RayFamily<Case> {
         oracle,
         methods: vec![
             method("exactray", |c: &Case| {
-                c.sphere.cast(&c.ray, Interval::FORWARD).map(|h| h.t)
+                c.sphere.cast_t(&c.ray, Interval::FORWARD)
             }),
             method("naive", naive),
             method("naive-stable", stable),

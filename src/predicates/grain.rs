@@ -55,10 +55,15 @@ impl Grain {
     }
 
     /// Bits needed for the largest value as an integer multiple of
-    /// `2^lo_min`: every value is `X * 2^lo_min` with `|X| < 2^span`.
+    /// `2^lo_min`: every value is `X * 2^lo_min` with `|X| < 2^span`; 0
+    /// when every value is zero.
     #[inline]
     pub(crate) fn span(self) -> i32 {
-        self.hi_max - self.lo_min + 1
+        if self.all_zero() {
+            0
+        } else {
+            self.hi_max - self.lo_min + 1
+        }
     }
 }
 

@@ -1,11 +1,10 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::quadratic::{
-    SMALL_SPAN, U, certified_roots, circle_coeffs, cross_magnitudes, eval_circle, exact_roots,
-    in_filter_range, norm1,
-};
+use super::circle::Circle;
+use super::quadratic::{ETA, SMALL_SPAN, U, exact_roots, in_filter_range, norm1};
 use super::{Hit, RayCast, first_hit, first_in, unit_or};
+use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -41,29 +40,12 @@ impl Cylinder {
     /// ```
     pub fn line_roots(&self, ray: &Ray) -> Roots {
         let (o, d, ax) = (ray.origin(), ray.direction(), self.axis);
-        let w = o - self.point;
-        // Project across the axis: |u + t v|^2 = R^2 with u = w x a,
-        // v = d x a, R^2 = r^2 |a|^2, a sphere-like problem in the plane
-        // normal to the axis (scaled by |a|).
-        let (u, v) = (w.cross(ax), d.cross(ax));
-        let rr = self.radius * self.radius * ax.dot(ax);
-        let (nu, nv) = (norm1(u), norm1(v));
-        if in_filter_range(nv * nv) && in_filter_range(nu * nv) && in_filter_range(rr * nv * nv) {
-            // Per component, u = w x a carries w's rounding (u |w_i|) and
-            // two roundings of its own, each relative to the magnitudes of
-            // its two products: 3 u (|w_j a_k| + |w_k a_j|); v = d x a only
-            // its own two. R^2 carries r^2 (1 rounding), |a|^2 (3) and their
-            // product (1).
-            let eu = cross_magnitudes(w, ax) * (3.0 * U);
-            let ev = cross_magnitudes(d, ax) * (2.0 * U);
-            let err = 5.0 * U * rr;
-            let k = circle_coeffs(u, eu, v, ev, rr, err);
-            let eval = |t| eval_circle(u, eu, v, ev, rr, err, t);
-            if let Some(roots) = certified_roots(&k, eval) {
-                return roots;
-            }
-        }
-        exact(o, d, self.point, ax, self.radius)
+        let filtered = with_fma(&Filtered {
+            o,
+            d,
+            cylinder: self,
+        });
+        filtered.unwrap_or_else(|| exact(o, d, self.point, ax, self.radius))
     }
 
     /// The unit normal at `x` (on or near the surface): away from the axis.
@@ -73,6 +55,94 @@ impl Cylinder {
         let a = self.axis;
         unit_or(w - a * (w.dot(a) / a.dot(a)), fallback)
     }
+}
+
+/// The filtered stage, run with hardware FMA where the CPU has it.
+struct Filtered<'a> {
+    o: DVec3,
+    d: DVec3,
+    cylinder: &'a Cylinder,
+}
+
+impl FmaKernel for Filtered<'_> {
+    type Output = Option<Roots>;
+
+    /// Projected across the axis, `|u + t v|^2 = R^2` with `u = w x a`,
+    /// `v = d x a`, `R^2 = r^2 |a|^2`: a sphere-like problem in the plane
+    /// normal to the axis (scaled by `|a|`), its inputs in double-double.
+    #[inline(always)]
+    fn run(&self) -> Option<Roots> {
+        let (o, d, c) = (self.o, self.d, self.cylinder);
+        let (ax, p) = (c.axis, c.point);
+        let (x, y, z) = (two_sum(o.x, -p.x), two_sum(o.y, -p.y), two_sum(o.z, -p.z));
+        let (wh, wl) = (DVec3::new(x.0, y.0, z.0), DVec3::new(x.1, y.1, z.1));
+        let (uh, ul, eu) = cross_dd(wh, wl, ax);
+        let (vh, vl, ev) = cross_dd(d, DVec3::ZERO, ax);
+        let (rh, rl, err) = scaled_square(c.radius, ax);
+        let (nu, nv) = (norm1(uh), norm1(vh));
+        let a = nv * nv;
+        if !(in_filter_range(a) && in_filter_range(nu * nv) && in_filter_range(rh * a)) {
+            return None;
+        }
+        Circle::<true> {
+            wh: uh,
+            wl: ul,
+            ew: eu,
+            dh: vh,
+            dl: vl,
+            ed: ev,
+            rh,
+            rl,
+            err,
+        }
+        .roots()
+    }
+}
+
+/// `(wh + wl) x a` as a double-double `hi + lo` per component, with a bound
+/// on its error: each component `w_j a_k - w_k a_j` takes its two high
+/// products and their difference by error-free transformations (Higham
+/// §4.3); the five low-order terms round in at most four additions and two
+/// products, each below the sum of their magnitudes.
+#[inline(always)]
+fn cross_dd(wh: DVec3, wl: DVec3, a: DVec3) -> (DVec3, DVec3, DVec3) {
+    let (mut hi, mut lo, mut err) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+    for k in 0..3 {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        let (p1, e1) = two_prod(wh[i], a[j]);
+        let (p2, e2) = two_prod(wh[j], a[i]);
+        let (s, es) = two_sum(p1, -p2);
+        let (l1, l2) = (wl[i] * a[j], wl[j] * a[i]);
+        let tail = es + (e1 - e2) + (l1 - l2);
+        hi[k] = s;
+        lo[k] = tail;
+        err[k] = 6.0 * U * (es.abs() + e1.abs() + e2.abs() + l1.abs() + l2.abs()) + 4.0 * ETA;
+    }
+    (hi, lo, err)
+}
+
+/// `r^2 |a|^2` as a double-double `hi + lo` with a bound on its error: the
+/// squares and the high parts' sums by error-free transformations, the
+/// low-order terms rounding within a few units of their magnitudes.
+#[inline(always)]
+fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
+    let (r2h, r2l) = two_prod(r, r);
+    let (q0, l0) = two_prod(a.x, a.x);
+    let (q1, l1) = two_prod(a.y, a.y);
+    let (q2, l2) = two_prod(a.z, a.z);
+    let (s1, f1) = two_sum(q0, q1);
+    let (ah, f2) = two_sum(s1, q2);
+    let al = (l0 + l1 + l2) + (f1 + f2);
+    let e_al = 5.0 * U * (l0.abs() + l1.abs() + l2.abs() + f1.abs() + f2.abs()) + 4.0 * ETA;
+    let (ph, pl) = two_prod(r2h, ah);
+    let (m1, m2) = (r2h * al, r2l * ah);
+    let lo = pl + (m1 + m2);
+    let err = 4.0 * U * (pl.abs() + m1.abs() + m2.abs())
+        + r2h.abs() * e_al
+        + (r2l * al).abs() * (1.0 + 4.0 * U)
+        + r2l.abs() * e_al
+        + 4.0 * ETA;
+    (ph, lo, err)
 }
 
 /// The exact stage, at three grains (`o, p, r`: `lo`; `d`: `ld`; `a`:
@@ -146,8 +216,8 @@ impl RayCast for Cylinder {
     }
 
     #[inline]
-    fn hits(&self, ray: &Ray, range: Interval) -> bool {
-        first_in(self.line_roots(ray), range).is_some()
+    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
+        first_in(self.line_roots(ray), range)
     }
 }
 

@@ -29,14 +29,22 @@ pub trait RayCast {
     /// The hit with the smallest `t` inside `range`, or `None`.
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit>;
 
+    /// The `t` of [`RayCast::cast`]'s hit, without its point and normal:
+    /// what a closest-hit loop compares before it shades the winner.
+    #[inline]
+    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
+        self.cast(ray, range).map(|hit| hit.t)
+    }
+
     /// Whether the ray meets the shape for some `t` inside `range` (a shadow
     /// ray's question); may be cheaper than [`RayCast::cast`].
     #[inline]
     fn hits(&self, ray: &Ray, range: Interval) -> bool {
-        self.cast(ray, range).is_some()
+        self.cast_t(ray, range).is_some()
     }
 }
 
+mod circle;
 mod cone;
 mod cylinder;
 mod plane;

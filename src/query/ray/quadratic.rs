@@ -6,9 +6,14 @@
 //!   *Accuracy and Stability of Numerical Algorithms*, 2nd ed., ch. 3).
 //!   It answers when the bound certifies the sign of the discriminant (so
 //!   the root count is exact) and each computed root is certified, a
-//!   posteriori, to have an exact root within 3 ulps: the exact polynomial,
-//!   evaluated with a rigorous error bound, changes sign across it (so each
-//!   root is within 4 ulps of the correctly rounded root);
+//!   posteriori, to have an exact root within 3 ulps (so within 4 ulps of
+//!   the correctly rounded root): one evaluation of the exact polynomial
+//!   with a rigorous error bound, in working precision or, where that
+//!   bound is too loose, in double-double, and a lower bound on the
+//!   derivative (the mean value theorem, [`root_within`]); a root a few
+//!   ulps off is first corrected by one Newton step from the double-double
+//!   value. The filtered stages run with hardware FMA where the CPU has it
+//!   (`float::with_fma`);
 //! - **exact**: the coefficients as exact integers (`wide.rs`), the
 //!   discriminant's sign exact, each coefficient rounded once to 53 bits
 //!   with an unbounded exponent ([`Extended`]) and the roots from the
@@ -21,7 +26,6 @@
 
 use crate::extended::Extended;
 use crate::float::sqrt;
-use crate::hard_inputs::step_ulps;
 use crate::predicates::wide::Wide;
 use crate::roots::Roots;
 use crate::sign::Sign;
@@ -35,13 +39,14 @@ pub(crate) const U: f64 = f64::EPSILON / 2.0;
 /// values needs at most 128 bits with its sign.
 pub(crate) const SMALL_SPAN: i32 = 126;
 
-/// Half-form coefficients, the bound `e_a` on `A`'s absolute error, and
-/// the discriminant `disc ≈ B^2 - A C` with its bound `e_disc`.
+/// Half-form coefficients with bounds on the absolute errors of `A` and
+/// `B`, and the discriminant `disc ≈ B^2 - A C` with its bound `e_disc`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Coeffs {
     pub a: f64,
     pub e_a: f64,
     pub b: f64,
+    pub e_b: f64,
     pub c: f64,
     pub disc: f64,
     pub e_disc: f64,
@@ -52,24 +57,43 @@ pub(crate) struct Coeffs {
 /// root is within 4 ulps of it (3.5, rounded to whole ulps).
 pub(crate) const CERTIFIED_ULPS: i64 = 3;
 
+/// An absolute slack for results that underflow, where a rounding error
+/// is bounded by half the smallest subnormal (`2^-1075`) rather than
+/// relatively: added once per operation that could underflow. It is
+/// `2^-500`, far above that, so that neither it nor its square (which the
+/// second-order error terms form) is subnormal: an operation with a
+/// subnormal operand or result costs a microcode assist on x86, about a
+/// hundred cycles. The filter's magnitudes start near `1e-120`, so the
+/// slack never decides a certificate.
+pub(crate) const ETA: f64 = 3.054936363499605e-151; // 2^-500
+
+/// The exact polynomial of a cast, evaluated with a rigorous error bound.
+/// Implementations mark both methods `#[inline(always)]`: they run inside
+/// the FMA-enabled copy of the filtered stage (`float::with_fma`).
+pub(crate) trait Polynomial {
+    /// The value at `t` in working precision and a bound on its error.
+    fn eval_fast(&self, t: f64) -> (f64, f64);
+    /// The value at `t` in double-double and a bound on its error.
+    fn eval_precise(&self, t: f64) -> (f64, f64);
+}
+
 /// The roots when the running bound on the discriminant certifies the
 /// count and each computed root is certified within [`CERTIFIED_ULPS`] of
 /// an exact root; `None` asks for the exact stage.
 ///
-/// A root `t` is certified when the exact polynomial, evaluated with a
-/// rigorous error bound by `eval` (which returns the value and the bound),
-/// has opposite signs `CERTIFIED_ULPS` ulps below and above `t`: an exact
-/// root lies between. The two brackets are disjoint and the count is two,
-/// so each holds exactly one root. This a-posteriori check is what makes
-/// the fast path both fast and tight: an a-priori bound on the stable
-/// formula costs several units of roundoff for every rounding it passes
-/// through, while the actual errors are about one.
+/// A root is certified from one evaluation of the exact polynomial with a
+/// rigorous error bound: first in working precision, then, where its
+/// bound is too loose, in double-double; see [`certified_root`] and
+/// [`root_within`]. This a-posteriori check is what makes the filtered
+/// stage both fast and tight: an a-priori bound on the stable formula
+/// costs several units of roundoff for every rounding it passes through,
+/// while the actual errors are about one.
 #[inline(always)]
-pub(crate) fn certified_roots(k: &Coeffs, eval: impl Fn(f64) -> (f64, f64)) -> Option<Roots> {
+pub(crate) fn certified_roots(k: &Coeffs, p: &impl Polynomial) -> Option<Roots> {
     // The bounds are first order; the factor covers the O(u^2) terms.
     let e_disc = k.e_disc * (1.0 + 64.0 * U);
     // A NaN or infinite bound (overflow) fails the first test.
-    if e_disc.is_nan() || e_disc == f64::INFINITY || k.a <= k.e_a * (1.0 + 64.0 * U) {
+    if e_disc.is_nan() || e_disc == f64::INFINITY || k.a.abs() <= k.e_a * (1.0 + 64.0 * U) {
         return None;
     }
     if k.disc < -e_disc {
@@ -82,40 +106,65 @@ pub(crate) fn certified_roots(k: &Coeffs, eval: impl Fn(f64) -> (f64, f64)) -> O
     let q = -(k.b + s.copysign(k.b));
     let (t1, t2) = (q / k.a, k.c / q);
     let (t1, t2) = if t1 <= t2 { (t1, t2) } else { (t2, t1) };
-    let apart = step_ulps(t1, 2 * CERTIFIED_ULPS) < t2;
-    (apart && brackets_root(t1, &eval) && brackets_root(t2, &eval)).then_some(Roots::Two(t1, t2))
+    let t1 = certified_root(k, t1, p)?;
+    let t2 = certified_root(k, t2, p)?;
+    // Disjoint brackets: with the count two, each holds exactly one root.
+    (t1 + radius(t1) < t2 - radius(t2)).then_some(Roots::Two(t1, t2))
 }
 
-/// Whether the polynomial certainly changes sign across
-/// `[t - CERTIFIED_ULPS ulps, t + CERTIFIED_ULPS ulps]`.
+/// `t`, or `t` after one Newton step, certified within [`CERTIFIED_ULPS`]
+/// of an exact root, or `None`. The working-precision evaluation settles
+/// most roots; where its bound is too loose, the double-double one
+/// certifies `t` or, where `t` itself is a few ulps off, corrects it by a
+/// Newton step from the accurate value (quadratic convergence: the step
+/// lands within about half an ulp) and certifies the result.
 #[inline(always)]
-fn brackets_root(t: f64, eval: &impl Fn(f64) -> (f64, f64)) -> bool {
-    let (p0, e0) = eval(step_ulps(t, -CERTIFIED_ULPS));
-    let (p1, e1) = eval(step_ulps(t, CERTIFIED_ULPS));
-    let slack = 1.0 + 64.0 * U;
-    p0.abs() > e0 * slack && p1.abs() > e1 * slack && (p0 < 0.0) != (p1 < 0.0)
+fn certified_root(k: &Coeffs, t: f64, p: &impl Polynomial) -> Option<f64> {
+    if root_within(k, t, p.eval_fast(t)) {
+        return Some(t);
+    }
+    let (v, e) = p.eval_precise(t);
+    if root_within(k, t, (v, e)) {
+        return Some(t);
+    }
+    let newton = t - v / (2.0 * (k.a * t + k.b));
+    if root_within(k, newton, p.eval_precise(newton)) {
+        return Some(newton);
+    }
+    None
 }
 
-/// `|x|^2 - rr` at `x = w + t d` with a rigorous first-order error bound,
-/// given componentwise bounds `ew`, `ed` on the errors of `w` and `d` and
-/// `err` on that of `rr`: the polynomial of the sphere-like problems.
+/// The largest `r` with `[t - r, t + r]` inside the [`CERTIFIED_ULPS`]
+/// floats on either side of `t`: that many spacings below `|t|`, which
+/// are at most the spacings above; halved when `|t|` lies within that
+/// many floats above a power of two, where the floats below it are
+/// twice as dense. Zero for `t = 0`, infinite or NaN for such `t`.
 #[inline(always)]
-pub(crate) fn eval_circle(
-    w: DVec3,
-    ew: DVec3,
-    d: DVec3,
-    ed: DVec3,
-    rr: f64,
-    err: f64,
-    t: f64,
-) -> (f64, f64) {
-    let td = d * t;
-    let x = w + td;
-    // The product and the sum round once each; the inputs' errors carry.
-    let ex = ew + ed * t.abs() + (td.abs() + x.abs()) * U;
-    let xx = x.dot(x);
-    let p = xx - rr;
-    (p, 2.0 * x.abs().dot(ex) + 3.0 * U * xx + err + U * p.abs())
+fn radius(t: f64) -> f64 {
+    let bits = t.abs().to_bits();
+    let spacing = t.abs() - f64::from_bits(bits.saturating_sub(1));
+    let near_power = (bits & ((1 << 52) - 1)) < CERTIFIED_ULPS as u64;
+    CERTIFIED_ULPS as f64 * if near_power { 0.5 * spacing } else { spacing }
+}
+
+/// Whether the exact polynomial `p(s) = A s^2 + 2 B s + C` has a root
+/// within [`CERTIFIED_ULPS`] floats of `t`, given `p(t)` within `v ± e`:
+/// whether it has one in `[t - r, t + r]`, `r` from [`radius`].
+///
+/// By the mean value theorem: on the interval `|p'(s)| = 2 |A s + B| >=
+/// 2 (|A t + B| - A r) =: m`; where `m > 0` and `|p(t)| < m r`, `p` is
+/// monotone there and moves by more than `|p(t)|` on either side of `t`,
+/// so it changes sign. `A t + B` is computed as `g` within
+/// `e_a |t| + e_b` (the coefficients' errors) plus two roundings.
+#[inline(always)]
+fn root_within(k: &Coeffs, t: f64, (v, e): (f64, f64)) -> bool {
+    let r = radius(t);
+    let at = k.a * t;
+    let g = at + k.b;
+    let e_g = (k.e_a * t.abs() + k.e_b + U * (at.abs() + g.abs())) * (1.0 + 8.0 * U) + ETA;
+    let half_m = (g.abs() - e_g - (k.a + k.e_a) * r) * (1.0 - 4.0 * U);
+    // NaN anywhere fails the comparisons.
+    half_m > 0.0 && (v.abs() + e) * (1.0 + 64.0 * U) < 2.0 * half_m * r * (1.0 - 4.0 * U)
 }
 
 /// The roots of `A t^2 + 2 B t + C` from exact integer coefficients:
@@ -164,59 +213,6 @@ pub(crate) fn exact_roots<const N: usize, const M: usize>(
 #[inline(always)]
 pub(crate) fn norm1(v: DVec3) -> f64 {
     v.x.abs() + v.y.abs() + v.z.abs()
-}
-
-/// The half-form coefficients of `|w + t d|^2 = rr`, the sphere-like core
-/// that the sphere (`w = o - c`) and the cylinder (`w`, `d` projected
-/// across the axis) share, from inputs known to within `|δw_i| <= ew_i`,
-/// `|δd_i| <= ed_i` (componentwise) and `|δrr| <= err`:
-///
-/// `A = |d|^2` with its error bound, `B = w . d`, `C = |w|^2 - rr` (their
-/// accuracy is checked on the roots, see [`certified_roots`]), and the discriminant in
-/// Lagrange's form `rr |d|^2 - |w x d|^2`, which does not cancel for far
-/// origins the way `B^2 - A C` does.
-///
-/// Error bounds (first order): a sum of `n` rounded products is within
-/// `n u` of its value relative to the sum of its terms' magnitudes (Higham
-/// ch. 3); an input error `δx_i` changes a product `x_i y_j` by at most
-/// `|δx_i| |y_j|`. Each component of `w x d` is a difference of two
-/// products: two roundings relative to the two products' magnitudes.
-#[inline(always)]
-pub(crate) fn circle_coeffs(w: DVec3, ew: DVec3, d: DVec3, ed: DVec3, rr: f64, err: f64) -> Coeffs {
-    let ad = d.abs();
-    let a = d.dot(d);
-    let e_a = 2.0 * ad.dot(ed) + 3.0 * U * a;
-    let b = w.dot(d);
-    let c = w.dot(w) - rr;
-    let cr = w.cross(d);
-    // Input errors propagate into each component as |w_j| ed_k + |d_k|
-    // ew_j + |w_k| ed_j + |d_j| ew_k.
-    let e_cr =
-        cross_magnitudes(w, ed) + cross_magnitudes(ew, d) + cross_magnitudes(w, d) * (2.0 * U);
-    let x = cr.dot(cr);
-    let e_x = 2.0 * cr.abs().dot(e_cr) + 3.0 * U * x;
-    let disc = crate::float::fma(rr, a, -x);
-    let e_disc = a * err + rr * e_a + e_x + U * disc.abs();
-    Coeffs {
-        a,
-        e_a,
-        b,
-        c,
-        disc,
-        e_disc,
-    }
-}
-
-/// `|x_j y_k| + |x_k y_j|` per component: what bounds the rounding of each
-/// component of `x x y`.
-#[inline(always)]
-pub(crate) fn cross_magnitudes(x: DVec3, y: DVec3) -> DVec3 {
-    let (x, y) = (x.abs(), y.abs());
-    DVec3::new(
-        x.y * y.z + x.z * y.y,
-        x.z * y.x + x.x * y.z,
-        x.x * y.y + x.y * y.x,
-    )
 }
 
 /// Whether `v` lies where the filtered stage's bounds hold: products of the

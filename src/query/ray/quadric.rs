@@ -1,7 +1,10 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
-use super::quadratic::{Coeffs, SMALL_SPAN, U, certified_roots, exact_roots, in_filter_range};
+use super::quadratic::{
+    Coeffs, ETA, Polynomial, SMALL_SPAN, U, certified_roots, exact_roots, in_filter_range,
+};
 use super::{Hit, RayCast, first_hit, first_in, unit_or};
+use crate::float::{FmaKernel, fma, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -24,10 +27,8 @@ impl Quadric {
     /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
     pub fn line_roots(&self, ray: &Ray) -> Roots {
         let (o, d) = (ray.origin(), ray.direction());
-        if let Some(roots) = filtered(&self.k, o, d) {
-            return roots;
-        }
-        exact(&self.k, o, d)
+        let filtered = with_fma(&Filtered { k: &self.k, o, d });
+        filtered.unwrap_or_else(|| exact(&self.k, o, d))
     }
 }
 
@@ -65,7 +66,22 @@ fn bilinear(m: &[[f64; 4]; 4], x: [f64; 4], y: [f64; 4]) -> (f64, f64) {
 /// 15 for the sum, so within `17 u` of the sum of the terms' magnitudes
 /// (which the same loop computes, rounding upwards by at most that much
 /// again; the bound uses 18).
-#[inline]
+struct Filtered<'a> {
+    k: &'a [f64; 10],
+    o: DVec3,
+    d: DVec3,
+}
+
+impl FmaKernel for Filtered<'_> {
+    type Output = Option<Roots>;
+
+    #[inline(always)]
+    fn run(&self) -> Option<Roots> {
+        filtered(self.k, self.o, self.d)
+    }
+}
+
+#[inline(always)]
 fn filtered(k: &[f64; 10], o: DVec3, d: DVec3) -> Option<Roots> {
     let m = doubled_matrix(k);
     let x = [o.x, o.y, o.z, 1.0];
@@ -77,7 +93,7 @@ fn filtered(k: &[f64; 10], o: DVec3, d: DVec3) -> Option<Roots> {
         return None;
     }
     let (e_a, e_b, e_c) = (18.0 * U * ma, 18.0 * U * mb, 18.0 * U * mc);
-    let disc = crate::float::fma(-a, c, b * b);
+    let disc = fma(-a, c, b * b);
     // B^2 rounds once inside the fma's addend, the fma once; the inputs'
     // errors propagate through the products.
     let e_disc = 2.0 * b.abs() * e_b + a.abs() * e_c + c.abs() * e_a + U * b * b + U * disc.abs();
@@ -85,33 +101,83 @@ fn filtered(k: &[f64; 10], o: DVec3, d: DVec3) -> Option<Roots> {
         a,
         e_a,
         b,
+        e_b,
         c,
         disc,
         e_disc,
     };
     // A leading coefficient that is (nearly) zero declines here and goes to
     // the exact stage, which handles degrees 1 and 0.
-    certified_roots(&k2, |t| eval(&m, o, d, t))
+    certified_roots(&k2, &Line { m, o, d })
 }
 
-/// `x^T 2Q x` at `x = (o + t d, 1)`, with a rigorous first-order error
-/// bound: each coordinate of `o + t d` rounds twice (product and sum), and
-/// an error `δx_i` changes the form by at most `2 |(2Q |x|)_i| δx_i`; the
-/// form's own 16 products and sums round within `18 u` of the sum of its
-/// terms' magnitudes, as in [`filtered`].
-#[inline(always)]
-fn eval(m: &[[f64; 4]; 4], o: DVec3, d: DVec3, t: f64) -> (f64, f64) {
-    let td = d * t;
-    let x = o + td;
-    let ex = (td.abs() + x.abs()) * U;
-    let xh = [x.x, x.y, x.z, 1.0];
-    let (p, mag) = bilinear(m, xh, xh);
-    let mut prop = 0.0;
-    for i in 0..3 {
-        let g: f64 = (0..4).map(|j| (m[i][j] * xh[j]).abs()).sum();
-        prop += 2.0 * g * ex[i];
+/// The quadric's equation along the line `o + t d`.
+struct Line {
+    m: [[f64; 4]; 4],
+    o: DVec3,
+    d: DVec3,
+}
+
+impl Polynomial for Line {
+    /// `x^T 2Q x` at `x = (o + t d, 1)`, with a rigorous first-order error
+    /// bound: each coordinate `fma(t, d_i, o_i)` rounds once, and an error
+    /// `δx_i` changes the form by at most `2 |(2Q |x|)_i| δx_i`; the form's
+    /// own 16 products and sums round within `18 u` of the sum of its
+    /// terms' magnitudes, as in [`filtered`].
+    #[inline(always)]
+    fn eval_fast(&self, t: f64) -> (f64, f64) {
+        let (m, o, d) = (&self.m, self.o, self.d);
+        let x = DVec3::new(fma(t, d.x, o.x), fma(t, d.y, o.y), fma(t, d.z, o.z));
+        let ex = x.abs() * U + DVec3::splat(ETA);
+        let xh = [x.x, x.y, x.z, 1.0];
+        let (p, mag) = bilinear(m, xh, xh);
+        let mut prop = 0.0;
+        for i in 0..3 {
+            let g: f64 = (0..4).map(|j| (m[i][j] * xh[j]).abs()).sum();
+            prop += 2.0 * g * ex[i];
+        }
+        (p, prop + 18.0 * U * mag + 16.0 * ETA)
     }
-    (p, prop + 18.0 * U * mag)
+
+    /// `x^T 2Q x` in double-double: each `x_i = hi + lo` from error-free
+    /// transformations (Higham §4.3), each of the ten distinct terms
+    /// `w m_ij x_i x_j` (`w` = 1 on the diagonal, 2 off it) split into an
+    /// exact product of the high parts and low-order terms, the high parts
+    /// summed exactly; only low-order terms (of relative size `u`) round.
+    #[inline(always)]
+    fn eval_precise(&self, t: f64) -> (f64, f64) {
+        let (m, o, d) = (&self.m, self.o, self.d);
+        let (mut xh, mut xl, mut ex) = ([1.0; 4], [0.0; 4], [0.0; 4]);
+        for i in 0..3 {
+            let (ph, pl) = two_prod(t, d[i]);
+            let (sh, sl) = two_sum(o[i], ph);
+            xh[i] = sh;
+            xl[i] = sl + pl;
+            ex[i] = U * xl[i].abs() + 2.0 * ETA;
+        }
+        let (mut s, mut tail, mut mag, mut e) = (0.0, 0.0, 0.0, 0.0);
+        for i in 0..4 {
+            for j in i..4 {
+                let w = if i == j { m[i][j] } else { 2.0 * m[i][j] };
+                let (h, l) = two_prod(xh[i], xh[j]);
+                let (big, big_l) = two_prod(w, h);
+                let mixed = l + xh[i] * xl[j] + xl[i] * xh[j];
+                let low = big_l + w * mixed;
+                let (s2, se) = two_sum(s, big);
+                s = s2;
+                tail += low + se;
+                let mixed_mag = l.abs() + (xh[i] * xl[j]).abs() + (xl[i] * xh[j]).abs();
+                mag += big_l.abs() + w.abs() * mixed_mag + se.abs() + low.abs();
+                // The dropped xl_i xl_j and the errors of the low parts.
+                let (ai, aj) = (xh[i].abs() + xl[i].abs(), xh[j].abs() + xl[j].abs());
+                e += w.abs() * ((xl[i] * xl[j]).abs() + ex[i] * aj + ex[j] * ai + ex[i] * ex[j]);
+            }
+        }
+        let p = s + tail;
+        // Per term, at most 6 roundings among its low-order quantities, and
+        // 2 for the running tail: within 8 u of their magnitudes.
+        (p, e + 8.0 * U * mag + U * p.abs() + 64.0 * ETA)
+    }
 }
 
 /// The exact stage: the coefficients and `o` at one grain `lo <= 0` (so
@@ -178,7 +244,7 @@ impl RayCast for Quadric {
     }
 
     #[inline]
-    fn hits(&self, ray: &Ray, range: Interval) -> bool {
-        first_in(self.line_roots(ray), range).is_some()
+    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
+        first_in(self.line_roots(ray), range)
     }
 }

@@ -1,9 +1,9 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::quadratic::{
-    SMALL_SPAN, U, certified_roots, circle_coeffs, eval_circle, exact_roots, in_filter_range, norm1,
-};
+use super::circle::Circle;
+use super::quadratic::{SMALL_SPAN, exact_roots, in_filter_range, norm1};
 use super::{Hit, RayCast, first_hit, first_in, unit_or};
+use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -21,11 +21,13 @@ impl Sphere {
     /// Every real root of `|o + t d - center|^2 = radius^2` over the whole
     /// line (any sign of `t`), sorted. The count is exact: [`Roots::One`]
     /// exactly when the line is tangent, decided on the exact inputs. Each
-    /// root is within 4 ulps of the correctly rounded root where the fast
-    /// stage certifies it (almost every ordinary ray), and within 5 ulps of
-    /// the exact root (first-order bound) where the exact stage runs: for
-    /// tangent and grazing rays, some far origins, and tiny or huge
-    /// magnitudes. The report measures the actual error.
+    /// root is within 4 ulps of the correctly rounded root where the
+    /// filtered stage certifies it (every ordinary and far-origin ray of
+    /// the report's samples), and within 5 ulps of the exact root
+    /// (first-order bound) where the exact stage runs: for tangent and
+    /// near-tangent rays, and tiny or huge magnitudes. The report measures
+    /// the actual error. NaN or infinite inputs cannot reach here (the
+    /// constructors reject them); no input panics or allocates.
     ///
     /// ```
     /// use exactray::shape::Sphere;
@@ -40,21 +42,45 @@ impl Sphere {
     /// ```
     pub fn line_roots(&self, ray: &Ray) -> Roots {
         let (o, d) = (ray.origin(), ray.direction());
-        let w = o - self.center;
-        let rr = self.radius * self.radius;
-        let (nw, nd) = (norm1(w), norm1(d));
+        let filtered = with_fma(&Filtered { o, d, sphere: self });
+        filtered.unwrap_or_else(|| exact(o, d, self.center, self.radius))
+    }
+}
+
+/// The filtered stage, run with hardware FMA where the CPU has it.
+struct Filtered<'a> {
+    o: DVec3,
+    d: DVec3,
+    sphere: &'a Sphere,
+}
+
+impl FmaKernel for Filtered<'_> {
+    type Output = Option<Roots>;
+
+    #[inline(always)]
+    fn run(&self) -> Option<Roots> {
+        let (o, d, c, r) = (self.o, self.d, self.sphere.center, self.sphere.radius);
+        let (x, y, z) = (two_sum(o.x, -c.x), two_sum(o.y, -c.y), two_sum(o.z, -c.z));
+        let (wh, wl) = (DVec3::new(x.0, y.0, z.0), DVec3::new(x.1, y.1, z.1));
+        let (rh, rl) = two_prod(r, r);
+        let (nw, nd) = (norm1(wh), norm1(d));
         let a = nd * nd;
-        if in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(rr * a) {
-            // w = o - c rounds once per coordinate: |δw_i| <= u |w_i|; r^2
-            // rounds once.
-            let (ew, err) = (w.abs() * U, U * rr);
-            let k = circle_coeffs(w, ew, d, DVec3::ZERO, rr, err);
-            let eval = |t| eval_circle(w, ew, d, DVec3::ZERO, rr, err, t);
-            if let Some(roots) = certified_roots(&k, eval) {
-                return roots;
-            }
+        if !(in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(rh * a)) {
+            return None;
         }
-        exact(o, d, self.center, self.radius)
+        // o - c and r^2 are exact as pairs; d is exact.
+        Circle::<false> {
+            wh,
+            wl,
+            ew: DVec3::ZERO,
+            dh: d,
+            dl: DVec3::ZERO,
+            ed: DVec3::ZERO,
+            rh,
+            rl,
+            err: 0.0,
+        }
+        .roots()
     }
 }
 
@@ -107,7 +133,7 @@ impl RayCast for Sphere {
     }
 
     #[inline]
-    fn hits(&self, ray: &Ray, range: Interval) -> bool {
-        first_in(self.line_roots(ray), range).is_some()
+    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
+        first_in(self.line_roots(ray), range)
     }
 }

@@ -1,0 +1,177 @@
+//! The sphere-like problem `|w + t d|^2 = rr` that the sphere (`w = o - c`)
+//! and the cylinder (`w`, `d` projected across the axis) share, filtered:
+//! its half-form coefficients with error bounds, and the two evaluations
+//! of its polynomial that certify the roots ([`certified_roots`]).
+//!
+//! Each input is carried as a double-double `hi + lo` (the sphere's
+//! `o - c` and `r^2` are exact that way; the cylinder's projections are
+//! within `O(u^2)`), with a bound on what the pair still misses. That is
+//! what lets the working-precision evaluation certify far origins: the
+//! error of `w + t d` is then relative to the point near the surface, not
+//! to `|w|`.
+
+use super::quadratic::{Coeffs, ETA, Polynomial, U, certified_roots, norm1};
+use crate::float::{fma, two_prod, two_sum};
+use crate::roots::Roots;
+use glam::DVec3;
+
+/// `|w + t d|^2 = rr`, with `w = wh + wl` to within `ew` (componentwise),
+/// `d = dh + dl` to within `ed`, and `rr = rh + rl` to within `err`. With
+/// `INEXACT` false, `w = wh + wl`, `d = dh` and `rr = rh + rl` exactly
+/// (the sphere), and the bounds skip the terms that are zero then.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Circle<const INEXACT: bool> {
+    pub wh: DVec3,
+    pub wl: DVec3,
+    pub ew: DVec3,
+    pub dh: DVec3,
+    pub dl: DVec3,
+    pub ed: DVec3,
+    pub rh: f64,
+    pub rl: f64,
+    pub err: f64,
+}
+
+impl<const INEXACT: bool> Circle<INEXACT> {
+    /// The filtered roots (see [`certified_roots`]), or `None` for the
+    /// exact stage. The caller checks that the magnitudes are in the
+    /// filter's range.
+    #[inline(always)]
+    pub fn roots(&self) -> Option<Roots> {
+        certified_roots(&self.coeffs(), self)
+    }
+
+    /// `A = |d|^2`, `B = w . d`, `C = |w|^2 - rr` from the high parts, and
+    /// the discriminant in Lagrange's form `rr |d|^2 - |w x d|^2`, which
+    /// does not cancel for far origins the way `B^2 - A C` does.
+    ///
+    /// Error bounds (first order), in 1-norms, which cost a few additions
+    /// and are loose only by small factors: a sum of `n` rounded products
+    /// is within `n u` of its value relative to the sum of its terms'
+    /// magnitudes (Higham ch. 3); an input error `δx_i` changes a product
+    /// `x_i y_j` by at most `|δx_i| |y_j|`; each component of `w x d` is a
+    /// difference of two products, two roundings relative to their
+    /// magnitudes. Only the sign of the discriminant needs these bounds to
+    /// be tight, and only for rays within about `10 u` of tangency.
+    #[inline(always)]
+    fn coeffs(&self) -> Coeffs {
+        let (w, d) = (self.wh, self.dh);
+        let (nw, nd) = (norm1(w), norm1(d));
+        // What the high parts miss, in 1-norms: an error δw_i changes a
+        // sum of products w_i y_i by at most |δw|_1 max|y_i|.
+        let (ew1, ed1, err) = if INEXACT {
+            (
+                norm1(self.ew) + norm1(self.wl),
+                norm1(self.ed) + norm1(self.dl),
+                self.err + self.rl.abs(),
+            )
+        } else {
+            (norm1(self.wl), 0.0, self.rl.abs())
+        };
+        let rr = self.rh;
+        let a = d.dot(d);
+        let e_a = 2.0 * nd * ed1 + 3.0 * U * a + ETA;
+        let b = w.dot(d);
+        let e_b = nw * ed1 + ew1 * nd + 3.0 * U * nw * nd + ETA;
+        let c = w.dot(w) - rr;
+        let cr = w.cross(d);
+        // Summed over the components, |w_i d_j| + |w_j d_i| is at most
+        // |w|_1 |d|_1, and so are the propagated errors.
+        let e_cr = nw * ed1 + ew1 * nd + 2.0 * U * nw * nd;
+        let x = cr.dot(cr);
+        let e_x = 2.0 * norm1(cr) * e_cr + e_cr * e_cr + 3.0 * U * x;
+        let disc = fma(rr, a, -x);
+        let e_disc = a * err + rr * e_a + e_x + U * disc.abs() + 8.0 * ETA;
+        Coeffs {
+            a,
+            e_a,
+            b,
+            e_b,
+            c,
+            disc,
+            e_disc,
+        }
+    }
+}
+
+impl<const INEXACT: bool> Polynomial for Circle<INEXACT> {
+    /// `|x|^2 - rr` at `x = w + t d` in working precision, with a rigorous
+    /// first-order error bound. `x_i = fma(t, dh_i, wh_i) + wl_i` rounds
+    /// twice, each relative to a value of the size of `x_i` (near a root,
+    /// of the size of the radius), however far `w` is; the dot product
+    /// rounds within `3 u |x|^2` and the difference once more.
+    #[inline(always)]
+    fn eval_fast(&self, t: f64) -> (f64, f64) {
+        let f = DVec3::new(
+            fma(t, self.dh.x, self.wh.x),
+            fma(t, self.dh.y, self.wh.y),
+            fma(t, self.dh.z, self.wh.z),
+        );
+        let x = f + self.wl;
+        let mut ex = (f.abs() + x.abs()) * U + DVec3::splat(2.0 * ETA);
+        if INEXACT {
+            ex += self.ew + (self.ed + self.dl.abs()) * t.abs();
+        }
+        let xx = x.dot(x);
+        let diff = xx - self.rh;
+        let p = diff - self.rl;
+        let e = 2.0 * x.abs().dot(ex)
+            + ex.dot(ex)
+            + 3.0 * U * xx
+            + self.err.abs()
+            + U * (diff.abs() + p.abs())
+            + 4.0 * ETA;
+        (p, e)
+    }
+
+    /// `|x|^2 - rr` at `x = w + t d` in double-double: `t dh_i` and `x_i`'s
+    /// high part by error-free transformations (Higham §4.3), the squares
+    /// likewise, so only the low-order terms round, each at `u` relative
+    /// to quantities of size `u |x|^2` or `u |w| |x|`: the bound is
+    /// `O(u^2)` of the inputs' magnitudes.
+    #[inline(always)]
+    fn eval_precise(&self, t: f64) -> (f64, f64) {
+        let mut hi = [0.0; 4];
+        let mut lo_sum = 0.0;
+        let mut lo_mag = 0.0;
+        let mut e = self.err;
+        for (i, square) in hi.iter_mut().take(3).enumerate() {
+            let (ph, pl) = two_prod(t, self.dh[i]);
+            let (sh, sl) = two_sum(self.wh[i], ph);
+            // x_i = sh + lo, lo from three low-order terms, two roundings.
+            let (tail, mut e_lo) = if INEXACT {
+                let tdl = t * self.dl[i];
+                let tail = pl + self.wl[i] + tdl;
+                let e = self.ew[i] + self.ed[i] * t.abs();
+                (
+                    tail,
+                    e + 2.0 * U * (pl.abs() + self.wl[i].abs() + tdl.abs()),
+                )
+            } else {
+                let tail = pl + self.wl[i];
+                (tail, U * tail.abs())
+            };
+            let lo = sl + tail;
+            e_lo += U * lo.abs() + 2.0 * ETA;
+            let (qh, ql) = two_prod(sh, sh);
+            let cross = fma(2.0 * sh, lo, ql);
+            *square = qh;
+            lo_sum += cross;
+            lo_mag += cross.abs();
+            // Dropped lo^2, the error of lo carried through 2 sh lo, and the
+            // fma's rounding.
+            e += lo * lo + 2.0 * (sh.abs() + lo.abs()) * e_lo + e_lo * e_lo + U * cross.abs();
+        }
+        hi[3] = -self.rh;
+        let (s1, e1) = two_sum(hi[0], hi[1]);
+        let (s2, e2) = two_sum(s1, hi[2]);
+        let (s3, e3) = two_sum(s2, hi[3]);
+        let tail = lo_sum + ((e1 + e2) + e3) - self.rl;
+        let p = s3 + tail;
+        // The tail sums 7 terms: at most 7 roundings of partial sums, each
+        // below the sum of the magnitudes.
+        let mag = lo_mag + e1.abs() + e2.abs() + e3.abs() + self.rl.abs();
+        e += 7.0 * U * mag + U * p.abs() + 8.0 * ETA;
+        (p, e)
+    }
+}
