@@ -1,7 +1,7 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::circle::Circle;
+use super::circle::{Circle, exact_difference};
 use super::quadratic::{ETA, SMALL_SPAN, U, exact_roots, in_filter_range, norm1};
 use super::{Hit, RayCast, first_hit, first_in, unit_or};
 use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
@@ -74,8 +74,7 @@ impl FmaKernel for Filtered<'_> {
     fn run(&self) -> Option<Roots> {
         let (o, d, c) = (self.o, self.d, self.cylinder);
         let (ax, p) = (c.axis, c.point);
-        let (x, y, z) = (two_sum(o.x, -p.x), two_sum(o.y, -p.y), two_sum(o.z, -p.z));
-        let (wh, wl) = (DVec3::new(x.0, y.0, z.0), DVec3::new(x.1, y.1, z.1));
+        let (wh, wl) = exact_difference(o, p);
         let (uh, ul, eu) = cross_dd(wh, wl, ax);
         let (vh, vl, ev) = cross_dd(d, DVec3::ZERO, ax);
         let (rh, rl, err) = scaled_square(c.radius, ax);

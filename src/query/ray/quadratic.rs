@@ -106,32 +106,32 @@ pub(crate) fn certified_roots(k: &Coeffs, p: &impl Polynomial) -> Option<Roots> 
     let q = -(k.b + s.copysign(k.b));
     let (t1, t2) = (q / k.a, k.c / q);
     let (t1, t2) = if t1 <= t2 { (t1, t2) } else { (t2, t1) };
-    let t1 = certified_root(k, t1, p)?;
-    let t2 = certified_root(k, t2, p)?;
+    let (t1, r1) = certified_root(k, t1, p)?;
+    let (t2, r2) = certified_root(k, t2, p)?;
     // Disjoint brackets: with the count two, each holds exactly one root.
-    (t1 + radius(t1) < t2 - radius(t2)).then_some(Roots::Two(t1, t2))
+    (t1 + r1 < t2 - r2).then_some(Roots::Two(t1, t2))
 }
 
 /// `t`, or `t` after one Newton step, certified within [`CERTIFIED_ULPS`]
-/// of an exact root, or `None`. The working-precision evaluation settles
-/// most roots; where its bound is too loose, the double-double one
-/// certifies `t` or, where `t` itself is a few ulps off, corrects it by a
-/// Newton step from the accurate value (quadratic convergence: the step
-/// lands within about half an ulp) and certifies the result.
+/// of an exact root, with the radius of its bracket ([`radius`]), or
+/// `None`. The working-precision evaluation settles most roots; where its
+/// bound is too loose, the double-double one certifies `t` or, where `t`
+/// itself is a few ulps off, corrects it by a Newton step from the
+/// accurate value (quadratic convergence: the step lands within about
+/// half an ulp) and certifies the result.
 #[inline(always)]
-fn certified_root(k: &Coeffs, t: f64, p: &impl Polynomial) -> Option<f64> {
-    if root_within(k, t, p.eval_fast(t)) {
-        return Some(t);
+fn certified_root(k: &Coeffs, t: f64, p: &impl Polynomial) -> Option<(f64, f64)> {
+    let r = radius(t);
+    if root_within(k, t, r, p.eval_fast(t)) {
+        return Some((t, r));
     }
     let (v, e) = p.eval_precise(t);
-    if root_within(k, t, (v, e)) {
-        return Some(t);
+    if root_within(k, t, r, (v, e)) {
+        return Some((t, r));
     }
     let newton = t - v / (2.0 * (k.a * t + k.b));
-    if root_within(k, newton, p.eval_precise(newton)) {
-        return Some(newton);
-    }
-    None
+    let r = radius(newton);
+    root_within(k, newton, r, p.eval_precise(newton)).then_some((newton, r))
 }
 
 /// The largest `r` with `[t - r, t + r]` inside the [`CERTIFIED_ULPS`]
@@ -149,7 +149,7 @@ fn radius(t: f64) -> f64 {
 
 /// Whether the exact polynomial `p(s) = A s^2 + 2 B s + C` has a root
 /// within [`CERTIFIED_ULPS`] floats of `t`, given `p(t)` within `v ± e`:
-/// whether it has one in `[t - r, t + r]`, `r` from [`radius`].
+/// whether it has one in `[t - r, t + r]`, `r = radius(t)`.
 ///
 /// By the mean value theorem: on the interval `|p'(s)| = 2 |A s + B| >=
 /// 2 (|A t + B| - A r) =: m`; where `m > 0` and `|p(t)| < m r`, `p` is
@@ -157,8 +157,7 @@ fn radius(t: f64) -> f64 {
 /// so it changes sign. `A t + B` is computed as `g` within
 /// `e_a |t| + e_b` (the coefficients' errors) plus two roundings.
 #[inline(always)]
-fn root_within(k: &Coeffs, t: f64, (v, e): (f64, f64)) -> bool {
-    let r = radius(t);
+fn root_within(k: &Coeffs, t: f64, r: f64, (v, e): (f64, f64)) -> bool {
     let at = k.a * t;
     let g = at + k.b;
     let e_g = (k.e_a * t.abs() + k.e_b + U * (at.abs() + g.abs())) * (1.0 + 8.0 * U) + ETA;

@@ -1,9 +1,9 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::circle::Circle;
+use super::circle::{Circle, exact_difference};
 use super::quadratic::{SMALL_SPAN, exact_roots, in_filter_range, norm1};
 use super::{Hit, RayCast, first_hit, first_in, unit_or};
-use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
+use crate::float::{FmaKernel, two_prod, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -60,8 +60,7 @@ impl FmaKernel for Filtered<'_> {
     #[inline(always)]
     fn run(&self) -> Option<Roots> {
         let (o, d, c, r) = (self.o, self.d, self.sphere.center, self.sphere.radius);
-        let (x, y, z) = (two_sum(o.x, -c.x), two_sum(o.y, -c.y), two_sum(o.z, -c.z));
-        let (wh, wl) = (DVec3::new(x.0, y.0, z.0), DVec3::new(x.1, y.1, z.1));
+        let (wh, wl) = exact_difference(o, c);
         let (rh, rl) = two_prod(r, r);
         let (nw, nd) = (norm1(wh), norm1(d));
         let a = nd * nd;
