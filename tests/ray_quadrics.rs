@@ -370,3 +370,18 @@ fn all_zero_position_data_reaches_the_exact_stage_safely() {
     let s = Sphere::new([0.0, 0.0, 0.0], 0.0).unwrap();
     assert_eq!(s.line_roots(&ray), Roots::One(0.0));
 }
+
+/// Regression (shrunk by `cylinder_scaled`): `r^2` underflows to a
+/// subnormal while `|a|^2` is huge, so the underflow's absolute error,
+/// scaled by `|a|^2`, must be in the filtered stage's bound on
+/// `r^2 |a|^2`; without it a root came out 8 ulps off.
+#[test]
+fn cylinder_with_underflowing_radius_squared_and_huge_axis() {
+    let sc = |v: [f64; 3], k: i32| v.map(|x| x * pow2(k));
+    let o = [0.0; 3];
+    let d = [0.0, 0.0, -0.7301729602635897];
+    let p = [0.0, 0.0, 0.6123698048235435];
+    let a = [0.0, 0.7746040293581781, 0.0];
+    let (s, sd, sa) = (-510, -292, 306);
+    cylinder_case(sc(o, s), sc(d, sd), sc(p, s), sc(a, sa), 0.01 * pow2(s)).unwrap();
+}

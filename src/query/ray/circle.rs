@@ -77,7 +77,8 @@ impl<const INEXACT: bool> Circle<INEXACT> {
         let cr = w.cross(d);
         // Summed over the components, |w_i d_j| + |w_j d_i| is at most
         // |w|_1 |d|_1, and so are the propagated errors.
-        let e_cr = nw * ed1 + ew1 * nd + 2.0 * U * nw * nd;
+        // Each component's two products may underflow: ETA each.
+        let e_cr = nw * ed1 + ew1 * nd + 2.0 * U * nw * nd + 2.0 * ETA;
         let x = cr.dot(cr);
         let e_x = 2.0 * norm1(cr) * e_cr + e_cr * e_cr + 3.0 * U * x;
         let disc = fma(rr, a, -x);

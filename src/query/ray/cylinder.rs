@@ -136,10 +136,13 @@ fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
     let (ph, pl) = two_prod(r2h, ah);
     let (m1, m2) = (r2h * al, r2l * ah);
     let lo = pl + (m1 + m2);
+    // r^2 = r2h + r2l to within ETA (exact unless r^2 underflows); that
+    // error is scaled by |a|^2, which may be huge.
     let err = 4.0 * U * (pl.abs() + m1.abs() + m2.abs())
         + r2h.abs() * e_al
         + (r2l * al).abs() * (1.0 + 4.0 * U)
         + r2l.abs() * e_al
+        + ETA * (ah + al.abs() + e_al)
         + 4.0 * ETA;
     (ph, lo, err)
 }

@@ -170,7 +170,10 @@ impl Polynomial for Line {
                 mag += big_l.abs() + w.abs() * mixed_mag + se.abs() + low.abs();
                 // The dropped xl_i xl_j and the errors of the low parts.
                 let (ai, aj) = (xh[i].abs() + xl[i].abs(), xh[j].abs() + xl[j].abs());
-                e += w.abs() * ((xl[i] * xl[j]).abs() + ex[i] * aj + ex[j] * ai + ex[i] * ex[j]);
+                // The product of the high parts is exact unless it underflows
+                // (ETA), an error that w scales.
+                e += w.abs()
+                    * ((xl[i] * xl[j]).abs() + ex[i] * aj + ex[j] * ai + ex[i] * ex[j] + ETA);
             }
         }
         let p = s + tail;
