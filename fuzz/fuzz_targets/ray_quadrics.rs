@@ -8,7 +8,8 @@
 #![no_main]
 
 use exactray::inputs::finite_f64_from_bits;
-use exactray::ray::Ray;
+use exactray::query::ray::RayCast;
+use exactray::ray::{Interval, Ray};
 use exactray::roots::Roots;
 use exactray::shape::{Cylinder, Quadric, Sphere};
 use libfuzzer_sys::fuzz_target;
@@ -32,26 +33,54 @@ fuzz_target!(|input: (u8, [u64; 16])| {
     let o = [v[0], v[1], v[2]];
     let d = [v[3], v[4], v[5]];
     let Ok(ray) = Ray::new(o, d) else { return };
-    let (got, want) = match mode % 3 {
+    let forward = Interval::FORWARD;
+    let (got, first, want) = match mode % 3 {
         0 => {
             let (c, r) = ([v[6], v[7], v[8]], v[9].abs());
             let s = Sphere::new(c, r).expect("finite sphere");
-            (s.line_roots(&ray), Quadratic::sphere(o, d, c, r))
+            let first = s.cast_t(&ray, forward);
+            (s.line_roots(&ray), first, Quadratic::sphere(o, d, c, r))
         }
         1 => {
             let (p, a, r) = ([v[6], v[7], v[8]], [v[9], v[10], v[11]], v[12].abs());
             let Ok(cyl) = Cylinder::new(p, a, r) else {
                 return;
             };
-            (cyl.line_roots(&ray), Quadratic::cylinder(o, d, p, a, r))
+            let first = cyl.cast_t(&ray, forward);
+            (
+                cyl.line_roots(&ray),
+                first,
+                Quadratic::cylinder(o, d, p, a, r),
+            )
         }
         _ => {
             let k: [f64; 10] = core::array::from_fn(|i| v[6 + i]);
             let Ok(q) = Quadric::new(k) else { return };
-            (q.line_roots(&ray), Quadratic::quadric(o, d, k))
+            let first = q.cast_t(&ray, forward);
+            (q.line_roots(&ray), first, Quadratic::quadric(o, d, k))
         }
     };
     let want = want.answer();
+    // cast_t certifies only the roots it needs, by its own path: the first
+    // root t >= 0 (whose sign is exact). A root the oracle rounds to +-MAX
+    // may lie beyond f64's range, where the crate returns an infinity and
+    // no hit; such cases are not compared.
+    let beyond = want.roots.iter().any(|w| w.abs() == f64::MAX);
+    if want.count.is_some() && !beyond {
+        let expected = want.roots.iter().copied().find(|&w| w >= 0.0);
+        assert_eq!(
+            first.is_some(),
+            expected.is_some(),
+            "{v:?} mode {mode}: cast_t {first:?} vs {want:?}"
+        );
+        if let (Some(t), Some(w)) = (first, expected) {
+            let normal = w == 0.0 || (2f64.powi(-1000)..2f64.powi(1000)).contains(&w.abs());
+            assert!(
+                !normal || ulps_between(t, w) <= 5,
+                "{v:?} mode {mode}: cast_t {t:e} vs {w:e}"
+            );
+        }
+    }
     assert_eq!(
         got.count(),
         want.count,

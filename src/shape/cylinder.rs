@@ -22,6 +22,13 @@ pub struct Cylinder {
     pub(crate) point: DVec3,
     pub(crate) axis: DVec3,
     pub(crate) radius: f64,
+    /// `radius^2 |axis|^2` as a double-double with an error bound, for the
+    /// ray cast's filter: computed once here rather than per ray.
+    pub(crate) scaled_rr: (f64, f64, f64),
+    /// The coordinate axis the axis lies along, if it does (the other two
+    /// coordinates zero): the ray cast then drops that coordinate, which
+    /// is exact, and solves a circle problem in the other two.
+    pub(crate) aligned: Option<usize>,
 }
 
 impl Cylinder {
@@ -34,10 +41,17 @@ impl Cylinder {
         axis: impl IntoDVec3,
         radius_: f64,
     ) -> Result<Cylinder, InputError> {
+        let (point, axis, radius) = (
+            finite("point", point)?,
+            nonzero("axis", axis)?,
+            radius("radius", radius_)?,
+        );
         Ok(Cylinder {
-            point: finite("point", point)?,
-            axis: nonzero("axis", axis)?,
-            radius: radius("radius", radius_)?,
+            point,
+            axis,
+            radius,
+            scaled_rr: crate::query::ray::scaled_square(radius, axis),
+            aligned: (0..3).find(|&k| axis[(k + 1) % 3] == 0.0 && axis[(k + 2) % 3] == 0.0),
         })
     }
 

@@ -1,7 +1,7 @@
 //! The sphere-like problem `|w + t d|^2 = rr` that the sphere (`w = o - c`)
 //! and the cylinder (`w`, `d` projected across the axis) share, filtered:
 //! its half-form coefficients with error bounds, and the two evaluations
-//! of its polynomial that certify the roots ([`certified_roots`]).
+//! of its polynomial that certify the roots ([`Question`]).
 //!
 //! Each input is carried as a double-double `hi + lo` (the sphere's
 //! `o - c` and `r^2` are exact that way; the cylinder's projections are
@@ -10,9 +10,8 @@
 //! error of `w + t d` is then relative to the point near the surface, not
 //! to `|w|`.
 
-use super::quadratic::{Coeffs, ETA, Polynomial, U, certified_roots, norm1};
+use super::quadratic::{Coeffs, ETA, Polynomial, Question, U, in_filter_range, norm1};
 use crate::float::{fma, two_prod, two_sum};
-use crate::roots::Roots;
 use glam::DVec3;
 
 /// `|w + t d|^2 = rr`, with `w = wh + wl` to within `ew` (componentwise),
@@ -33,12 +32,12 @@ pub(crate) struct Circle<const INEXACT: bool> {
 }
 
 impl<const INEXACT: bool> Circle<INEXACT> {
-    /// The filtered roots (see [`certified_roots`]), or `None` for the
+    /// The filtered answer to `q` (see [`Question`]), or `None` for the
     /// exact stage. The caller checks that the magnitudes are in the
     /// filter's range.
     #[inline(always)]
-    pub fn roots(&self) -> Option<Roots> {
-        certified_roots(&self.coeffs(), self)
+    pub fn answer<Q: Question>(&self, q: Q) -> Option<Q::Answer> {
+        q.answer(&self.coeffs(), self)
     }
 
     /// `A = |d|^2`, `B = w . d`, `C = |w|^2 - rr` from the high parts, and
@@ -175,6 +174,38 @@ impl<const INEXACT: bool> Polynomial for Circle<INEXACT> {
         e += 7.0 * U * mag + U * p.abs() + 8.0 * ETA;
         (p, e)
     }
+}
+
+/// The filtered answer for `|w + t d|^2 = r^2` with `w = wh + wl` and `d`
+/// exact (the sphere, and the axis-aligned cylinder in its two other
+/// coordinates), or `None` where the magnitudes leave the filter's range.
+#[inline(always)]
+pub(crate) fn circle_of<Q: Question>(
+    wh: DVec3,
+    wl: DVec3,
+    d: DVec3,
+    r: f64,
+    q: Q,
+) -> Option<Q::Answer> {
+    let (rh, rl) = two_prod(r, r);
+    let (nw, nd) = (norm1(wh), norm1(d));
+    let a = nd * nd;
+    if !(in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(rh * a)) {
+        return None;
+    }
+    // r^2 is exact as a pair (in the filter's range it does not underflow).
+    Circle::<false> {
+        wh,
+        wl,
+        ew: DVec3::ZERO,
+        dh: d,
+        dl: DVec3::ZERO,
+        ed: DVec3::ZERO,
+        rh,
+        rl,
+        err: 0.0,
+    }
+    .answer(q)
 }
 
 /// `a - b` exactly, as a double-double `(hi, lo)` per component (TwoSum):

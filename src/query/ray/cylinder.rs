@@ -1,9 +1,11 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::circle::{Circle, exact_difference};
-use super::quadratic::{ETA, SMALL_SPAN, U, exact_roots, in_filter_range, norm1};
-use super::{Hit, RayCast, first_hit, first_in, unit_or};
+use super::circle::{Circle, circle_of, exact_difference};
+use super::quadratic::{
+    AllRoots, ETA, FirstIn, Question, SMALL_SPAN, U, exact_roots, in_filter_range, norm1,
+};
+use super::{Hit, RayCast, first_hit, unit_or};
 use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -39,13 +41,20 @@ impl Cylinder {
     /// assert_eq!(c.line_roots(&on_surface), Roots::All);
     /// ```
     pub fn line_roots(&self, ray: &Ray) -> Roots {
+        self.solve(ray, AllRoots)
+    }
+
+    /// The filtered answer to `q`, or the exact stage's.
+    #[inline]
+    fn solve<Q: Question>(&self, ray: &Ray, q: Q) -> Q::Answer {
         let (o, d, ax) = (ray.origin(), ray.direction(), self.axis);
         let filtered = with_fma(&Filtered {
             o,
             d,
             cylinder: self,
+            q,
         });
-        filtered.unwrap_or_else(|| exact(o, d, self.point, ax, self.radius))
+        filtered.unwrap_or_else(|| q.exact_answer(exact(o, d, self.point, ax, self.radius)))
     }
 
     /// The unit normal at `x` (on or near the surface): away from the axis.
@@ -58,26 +67,37 @@ impl Cylinder {
 }
 
 /// The filtered stage, run with hardware FMA where the CPU has it.
-struct Filtered<'a> {
+struct Filtered<'a, Q> {
     o: DVec3,
     d: DVec3,
     cylinder: &'a Cylinder,
+    q: Q,
 }
 
-impl FmaKernel for Filtered<'_> {
-    type Output = Option<Roots>;
+impl<Q: Question> FmaKernel for Filtered<'_, Q> {
+    type Output = Option<Q::Answer>;
 
     /// Projected across the axis, `|u + t v|^2 = R^2` with `u = w x a`,
     /// `v = d x a`, `R^2 = r^2 |a|^2`: a sphere-like problem in the plane
     /// normal to the axis (scaled by `|a|`), its inputs in double-double.
+    /// For an axis along coordinate `k`, `|(w + t d) x a|^2 = a_k^2 sum_{i
+    /// != k} (w_i + t d_i)^2`, so the problem is the circle of radius `r`
+    /// in the other two coordinates, with exact inputs as for the sphere.
     #[inline(always)]
-    fn run(&self) -> Option<Roots> {
+    fn run(&self) -> Option<Q::Answer> {
         let (o, d, c) = (self.o, self.d, self.cylinder);
         let (ax, p) = (c.axis, c.point);
         let (wh, wl) = exact_difference(o, p);
+        if let Some(k) = c.aligned {
+            let drop = |mut v: DVec3| {
+                v[k] = 0.0;
+                v
+            };
+            return circle_of(drop(wh), drop(wl), drop(d), c.radius, self.q);
+        }
         let (uh, ul, eu) = cross_dd(wh, wl, ax);
         let (vh, vl, ev) = cross_dd(d, DVec3::ZERO, ax);
-        let (rh, rl, err) = scaled_square(c.radius, ax);
+        let (rh, rl, err) = c.scaled_rr;
         let (nu, nv) = (norm1(uh), norm1(vh));
         let a = nv * nv;
         if !(in_filter_range(a) && in_filter_range(nu * nv) && in_filter_range(rh * a)) {
@@ -94,7 +114,7 @@ impl FmaKernel for Filtered<'_> {
             rl,
             err,
         }
-        .roots()
+        .answer(self.q)
     }
 }
 
@@ -123,8 +143,7 @@ fn cross_dd(wh: DVec3, wl: DVec3, a: DVec3) -> (DVec3, DVec3, DVec3) {
 /// `r^2 |a|^2` as a double-double `hi + lo` with a bound on its error: the
 /// squares and the high parts' sums by error-free transformations, the
 /// low-order terms rounding within a few units of their magnitudes.
-#[inline(always)]
-fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
+pub(crate) fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
     let (r2h, r2l) = two_prod(r, r);
     let (q0, l0) = two_prod(a.x, a.x);
     let (q1, l1) = two_prod(a.y, a.y);
@@ -219,7 +238,7 @@ impl RayCast for Cylinder {
 
     #[inline]
     fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        first_in(self.line_roots(ray), range)
+        self.solve(ray, FirstIn(range))
     }
 }
 

@@ -47,6 +47,7 @@ pub trait RayCast {
 mod circle;
 mod cone;
 mod cylinder;
+pub(crate) use cylinder::scaled_square;
 mod plane;
 pub(crate) mod quadratic;
 mod quadric;

@@ -4,16 +4,20 @@
 //! - **filtered**: the coefficients in `f64` beside a running bound on
 //!   their absolute errors (Wilkinson's running error analysis; N. Higham,
 //!   *Accuracy and Stability of Numerical Algorithms*, 2nd ed., ch. 3).
-//!   It answers when the bound certifies the sign of the discriminant (so
-//!   the root count is exact) and each computed root is certified, a
-//!   posteriori, to have an exact root within 3 ulps (so within 4 ulps of
-//!   the correctly rounded root): one evaluation of the exact polynomial
-//!   with a rigorous error bound, in working precision or, where that
-//!   bound is too loose, in double-double, and a lower bound on the
-//!   derivative (the mean value theorem, [`root_within`]); a root a few
-//!   ulps off is first corrected by one Newton step from the double-double
-//!   value. The filtered stages run with hardware FMA where the CPU has it
-//!   (`float::with_fma`);
+//!   It answers "no root" when the bound certifies that the discriminant
+//!   is negative, and otherwise when each computed root it needs is
+//!   certified, a posteriori, to have an exact root within 3 ulps (so
+//!   within 4 ulps of the correctly rounded root): one evaluation of the
+//!   exact polynomial with a rigorous error bound, in working precision
+//!   or, where that bound is too loose, in double-double, and a lower
+//!   bound on the derivative (the mean value theorem, [`root_within`]); a
+//!   root a few ulps off is first corrected by one Newton step from the
+//!   double-double value. A certified bracket holds a simple root, so the
+//!   certificates also settle the count, and the derivative's sign tells
+//!   which of the two roots a bracket holds ([`computed_count`]). A cast
+//!   that wants only the first root inside an interval certifies only the
+//!   roots it looks at ([`certified_first`]). The filtered stages run with
+//!   hardware FMA where the CPU has it (`float::with_fma`);
 //! - **exact**: the coefficients as exact integers (`wide.rs`), the
 //!   discriminant's sign exact, each coefficient rounded once to 53 bits
 //!   with an unbounded exponent ([`Extended`]) and the roots from the
@@ -27,6 +31,7 @@
 use crate::extended::Extended;
 use crate::float::sqrt;
 use crate::predicates::wide::Wide;
+use crate::ray::Interval;
 use crate::roots::Roots;
 use crate::sign::Sign;
 use glam::DVec3;
@@ -71,15 +76,144 @@ pub(crate) const ETA: f64 = 3.054936363499605e-151; // 2^-500
 /// Implementations mark both methods `#[inline(always)]`: they run inside
 /// the FMA-enabled copy of the filtered stage (`float::with_fma`).
 pub(crate) trait Polynomial {
+    /// Whether [`Polynomial::eval_fast`]'s bound is tight enough to be
+    /// worth trying first; where it almost never certifies (the general
+    /// quadric's, whose terms are as large as `|o|^2` however near the
+    /// surface the point is), the double-double evaluation runs alone.
+    const TRY_FAST: bool = true;
     /// The value at `t` in working precision and a bound on its error.
     fn eval_fast(&self, t: f64) -> (f64, f64);
     /// The value at `t` in double-double and a bound on its error.
     fn eval_precise(&self, t: f64) -> (f64, f64);
 }
 
-/// The roots when the running bound on the discriminant certifies the
-/// count and each computed root is certified within [`CERTIFIED_ULPS`] of
-/// an exact root; `None` asks for the exact stage.
+/// What a cast asks of a filtered stage: every root of the line
+/// ([`AllRoots`]) or only the first inside an interval ([`FirstIn`], which
+/// certifies only the roots it needs). `answer` gives `None` where the
+/// filter cannot certify, and the caller runs the exact stage, whose roots
+/// `exact_answer` turns into the same kind of answer.
+pub(crate) trait Question: Copy {
+    /// The answer: the roots, or the first root inside the interval.
+    type Answer;
+    /// The certified answer, or `None` for the exact stage.
+    fn answer(self, k: &Coeffs, p: &impl Polynomial) -> Option<Self::Answer>;
+    /// The answer from the exact stage's roots.
+    fn exact_answer(self, roots: Roots) -> Self::Answer;
+}
+
+/// Every real root of the line, sorted ([`certified_roots`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct AllRoots;
+
+impl Question for AllRoots {
+    type Answer = Roots;
+
+    #[inline(always)]
+    fn answer(self, k: &Coeffs, p: &impl Polynomial) -> Option<Roots> {
+        certified_roots(k, p)
+    }
+
+    #[inline(always)]
+    fn exact_answer(self, roots: Roots) -> Roots {
+        roots
+    }
+}
+
+/// The smallest root inside an interval ([`certified_first`]), as
+/// [`super::first_in`] takes it from [`AllRoots`]' answer.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FirstIn(pub Interval);
+
+impl Question for FirstIn {
+    type Answer = Option<f64>;
+
+    #[inline(always)]
+    fn answer(self, k: &Coeffs, p: &impl Polynomial) -> Option<Option<f64>> {
+        certified_first(k, p, self.0)
+    }
+
+    #[inline(always)]
+    fn exact_answer(self, roots: Roots) -> Option<f64> {
+        super::first_in(roots, self.0)
+    }
+}
+
+/// `Some(Some(sqrt(disc)))` where the computed discriminant is positive,
+/// `Some(None)` where the running bound certifies that there is no real
+/// root, `None` where it cannot tell (a near-tangent line) or the leading
+/// coefficient may be zero.
+///
+/// A positive discriminant is not checked against its bound here: the
+/// roots' certificates settle the count. A bracket certified by
+/// [`root_within`] holds a simple root (the polynomial changes sign and
+/// its derivative does not vanish), so the discriminant is positive; no
+/// bracket can be certified for a tangent line or one that misses. Only a
+/// claimed miss needs the bound, so the bound costs nothing on hits where
+/// the compiler sinks it into that branch.
+#[inline(always)]
+fn computed_count(k: &Coeffs) -> Option<Option<f64>> {
+    // The bounds are first order; the factor covers the O(u^2) terms.
+    let margin = 1.0 + 64.0 * U;
+    // False for NaN too.
+    let leading_nonzero = k.a.abs() > k.e_a * margin;
+    if !leading_nonzero {
+        return None;
+    }
+    if k.disc > 0.0 {
+        return Some(Some(sqrt(k.disc)));
+    }
+    // A NaN or infinite bound (overflow) fails the test.
+    let e_disc = k.e_disc * margin;
+    (k.disc < -e_disc && e_disc < f64::INFINITY).then_some(None)
+}
+
+/// The two computed roots, sorted, from the stable pair.
+#[inline(always)]
+fn stable_pair(k: &Coeffs, s: f64) -> (f64, f64) {
+    let q = -(k.b + s.copysign(k.b));
+    let (t1, t2) = (q / k.a, k.c / q);
+    if t1 <= t2 { (t1, t2) } else { (t2, t1) }
+}
+
+/// The first root inside `range`, as [`super::first_in`] would take it from
+/// [`certified_roots`]' answer, certifying only the roots it looks at: the
+/// smaller one, and the larger only when the smaller lies below `range`.
+/// `None` asks for the exact stage.
+///
+/// Which exact root a certified bracket holds follows from the sign of the
+/// derivative there, which [`root_within`] certifies: `A s + B` has the
+/// sign of `-A` at the smaller root and of `A` at the larger (`A s + B =
+/// ∓sqrt(B^2 - A C)` there). A bracket that holds the other root than the
+/// one expected (the computed roots out of order) declines.
+#[inline(always)]
+pub(crate) fn certified_first(
+    k: &Coeffs,
+    p: &impl Polynomial,
+    range: Interval,
+) -> Option<Option<f64>> {
+    let Some(s) = computed_count(k)? else {
+        return Some(None);
+    };
+    let (t1, t2) = stable_pair(k, s);
+    let smaller = |t: f64| (k.a * t + k.b) * k.a < 0.0;
+    let t1 = certified_root(k, t1, p)?;
+    if !smaller(t1) {
+        return None;
+    }
+    if t1 >= range.min() {
+        return Some((t1 <= range.max()).then_some(t1));
+    }
+    let t2 = certified_root(k, t2, p)?;
+    if smaller(t2) {
+        return None;
+    }
+    Some(range.contains(t2).then_some(t2))
+}
+
+/// The roots when the running bound on the discriminant certifies that
+/// there are none, or when each computed root is certified within
+/// [`CERTIFIED_ULPS`] of a different exact root (which certifies the count
+/// two, see [`computed_count`]); `None` asks for the exact stage.
 ///
 /// A root is certified from one evaluation of the exact polynomial with a
 /// rigorous error bound: first in working precision, then, where its
@@ -90,48 +224,36 @@ pub(crate) trait Polynomial {
 /// while the actual errors are about one.
 #[inline(always)]
 pub(crate) fn certified_roots(k: &Coeffs, p: &impl Polynomial) -> Option<Roots> {
-    // The bounds are first order; the factor covers the O(u^2) terms.
-    let e_disc = k.e_disc * (1.0 + 64.0 * U);
-    // A NaN or infinite bound (overflow) fails the first test.
-    if e_disc.is_nan() || e_disc == f64::INFINITY || k.a.abs() <= k.e_a * (1.0 + 64.0 * U) {
-        return None;
-    }
-    if k.disc < -e_disc {
+    let Some(s) = computed_count(k)? else {
         return Some(Roots::None);
-    }
-    if k.disc <= e_disc {
-        return None;
-    }
-    let s = sqrt(k.disc);
-    let q = -(k.b + s.copysign(k.b));
-    let (t1, t2) = (q / k.a, k.c / q);
-    let (t1, t2) = if t1 <= t2 { (t1, t2) } else { (t2, t1) };
-    let (t1, r1) = certified_root(k, t1, p)?;
-    let (t2, r2) = certified_root(k, t2, p)?;
-    // Disjoint brackets: with the count two, each holds exactly one root.
-    (t1 + r1 < t2 - r2).then_some(Roots::Two(t1, t2))
+    };
+    let (t1, t2) = stable_pair(k, s);
+    let t1 = certified_root(k, t1, p)?;
+    let t2 = certified_root(k, t2, p)?;
+    // Brackets around different roots: the derivative's certified signs
+    // differ (see `certified_first`), so the count is two.
+    let ga = |t: f64| (k.a * t + k.b) * k.a;
+    (ga(t1) < 0.0 && ga(t2) > 0.0 && t1 <= t2).then_some(Roots::Two(t1, t2))
 }
 
 /// `t`, or `t` after one Newton step, certified within [`CERTIFIED_ULPS`]
-/// of an exact root, with the radius of its bracket ([`radius`]), or
-/// `None`. The working-precision evaluation settles most roots; where its
+/// of an exact root (in the bracket of [`radius`]), or `None`. The working-precision evaluation settles most roots; where its
 /// bound is too loose, the double-double one certifies `t` or, where `t`
 /// itself is a few ulps off, corrects it by a Newton step from the
 /// accurate value (quadratic convergence: the step lands within about
 /// half an ulp) and certifies the result.
 #[inline(always)]
-fn certified_root(k: &Coeffs, t: f64, p: &impl Polynomial) -> Option<(f64, f64)> {
+fn certified_root<P: Polynomial>(k: &Coeffs, t: f64, p: &P) -> Option<f64> {
     let r = radius(t);
-    if root_within(k, t, r, p.eval_fast(t)) {
-        return Some((t, r));
+    if P::TRY_FAST && root_within(k, t, r, p.eval_fast(t)) {
+        return Some(t);
     }
     let (v, e) = p.eval_precise(t);
     if root_within(k, t, r, (v, e)) {
-        return Some((t, r));
+        return Some(t);
     }
     let newton = t - v / (2.0 * (k.a * t + k.b));
-    let r = radius(newton);
-    root_within(k, newton, r, p.eval_precise(newton)).then_some((newton, r))
+    root_within(k, newton, radius(newton), p.eval_precise(newton)).then_some(newton)
 }
 
 /// The largest `r` with `[t - r, t + r]` inside the [`CERTIFIED_ULPS`]

@@ -1,9 +1,10 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
 use super::quadratic::{
-    Coeffs, ETA, Polynomial, SMALL_SPAN, U, certified_roots, exact_roots, in_filter_range,
+    AllRoots, Coeffs, ETA, FirstIn, Polynomial, Question, SMALL_SPAN, U, exact_roots,
+    in_filter_range,
 };
-use super::{Hit, RayCast, first_hit, first_in, unit_or};
+use super::{Hit, RayCast, first_hit, unit_or};
 use crate::float::{FmaKernel, fma, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -26,9 +27,20 @@ impl Quadric {
     /// gives [`Roots::All`]); roots carry the accuracy of
     /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
     pub fn line_roots(&self, ray: &Ray) -> Roots {
+        self.solve(ray, AllRoots)
+    }
+
+    /// The filtered answer to `q`, or the exact stage's.
+    #[inline]
+    fn solve<Q: Question>(&self, ray: &Ray, q: Q) -> Q::Answer {
         let (o, d) = (ray.origin(), ray.direction());
-        let filtered = with_fma(&Filtered { k: &self.k, o, d });
-        filtered.unwrap_or_else(|| exact(&self.k, o, d))
+        let filtered = with_fma(&Filtered {
+            k: &self.k,
+            o,
+            d,
+            q,
+        });
+        filtered.unwrap_or_else(|| q.exact_answer(exact(&self.k, o, d)))
     }
 }
 
@@ -66,23 +78,24 @@ fn bilinear(m: &[[f64; 4]; 4], x: [f64; 4], y: [f64; 4]) -> (f64, f64) {
 /// 15 for the sum, so within `17 u` of the sum of the terms' magnitudes
 /// (which the same loop computes, rounding upwards by at most that much
 /// again; the bound uses 18).
-struct Filtered<'a> {
+struct Filtered<'a, Q> {
     k: &'a [f64; 10],
     o: DVec3,
     d: DVec3,
+    q: Q,
 }
 
-impl FmaKernel for Filtered<'_> {
-    type Output = Option<Roots>;
+impl<Q: Question> FmaKernel for Filtered<'_, Q> {
+    type Output = Option<Q::Answer>;
 
     #[inline(always)]
-    fn run(&self) -> Option<Roots> {
-        filtered(self.k, self.o, self.d)
+    fn run(&self) -> Option<Q::Answer> {
+        filtered(self.k, self.o, self.d, self.q)
     }
 }
 
 #[inline(always)]
-fn filtered(k: &[f64; 10], o: DVec3, d: DVec3) -> Option<Roots> {
+fn filtered<Q: Question>(k: &[f64; 10], o: DVec3, d: DVec3, q: Q) -> Option<Q::Answer> {
     let m = doubled_matrix(k);
     let x = [o.x, o.y, o.z, 1.0];
     let y = [d.x, d.y, d.z, 0.0];
@@ -108,7 +121,7 @@ fn filtered(k: &[f64; 10], o: DVec3, d: DVec3) -> Option<Roots> {
     };
     // A leading coefficient that is (nearly) zero declines here and goes to
     // the exact stage, which handles degrees 1 and 0.
-    certified_roots(&k2, &Line { m, o, d })
+    q.answer(&k2, &Line { m, o, d })
 }
 
 /// The quadric's equation along the line `o + t d`.
@@ -119,6 +132,11 @@ struct Line {
 }
 
 impl Polynomial for Line {
+    /// The working-precision bound is relative to the terms' magnitudes,
+    /// which for a point far from the quadric's centre dwarf the value
+    /// near a root: measured, it almost never certified a root.
+    const TRY_FAST: bool = false;
+
     /// `x^T 2Q x` at `x = (o + t d, 1)`, with a rigorous first-order error
     /// bound: each coordinate `fma(t, d_i, o_i)` rounds once, and an error
     /// `δx_i` changes the form by at most `2 |(2Q |x|)_i| δx_i`; the form's
@@ -248,6 +266,6 @@ impl RayCast for Quadric {
 
     #[inline]
     fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        first_in(self.line_roots(ray), range)
+        self.solve(ray, FirstIn(range))
     }
 }

@@ -1,9 +1,9 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::circle::{Circle, exact_difference};
-use super::quadratic::{SMALL_SPAN, exact_roots, in_filter_range, norm1};
-use super::{Hit, RayCast, first_hit, first_in, unit_or};
-use crate::float::{FmaKernel, two_prod, with_fma};
+use super::circle::{circle_of, exact_difference};
+use super::quadratic::{AllRoots, FirstIn, Question, SMALL_SPAN, exact_roots};
+use super::{Hit, RayCast, first_hit, unit_or};
+use crate::float::{FmaKernel, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};
@@ -41,45 +41,39 @@ impl Sphere {
     /// assert_eq!(s.line_roots(&graze), Roots::None);
     /// ```
     pub fn line_roots(&self, ray: &Ray) -> Roots {
+        self.solve(ray, AllRoots)
+    }
+
+    /// The filtered answer to `q`, or the exact stage's.
+    #[inline]
+    fn solve<Q: Question>(&self, ray: &Ray, q: Q) -> Q::Answer {
         let (o, d) = (ray.origin(), ray.direction());
-        let filtered = with_fma(&Filtered { o, d, sphere: self });
-        filtered.unwrap_or_else(|| exact(o, d, self.center, self.radius))
+        let filtered = with_fma(&Filtered {
+            o,
+            d,
+            sphere: self,
+            q,
+        });
+        filtered.unwrap_or_else(|| q.exact_answer(exact(o, d, self.center, self.radius)))
     }
 }
 
 /// The filtered stage, run with hardware FMA where the CPU has it.
-struct Filtered<'a> {
+struct Filtered<'a, Q> {
     o: DVec3,
     d: DVec3,
     sphere: &'a Sphere,
+    q: Q,
 }
 
-impl FmaKernel for Filtered<'_> {
-    type Output = Option<Roots>;
+impl<Q: Question> FmaKernel for Filtered<'_, Q> {
+    type Output = Option<Q::Answer>;
 
     #[inline(always)]
-    fn run(&self) -> Option<Roots> {
+    fn run(&self) -> Option<Q::Answer> {
         let (o, d, c, r) = (self.o, self.d, self.sphere.center, self.sphere.radius);
         let (wh, wl) = exact_difference(o, c);
-        let (rh, rl) = two_prod(r, r);
-        let (nw, nd) = (norm1(wh), norm1(d));
-        let a = nd * nd;
-        if !(in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(rh * a)) {
-            return None;
-        }
-        // o - c and r^2 are exact as pairs; d is exact.
-        Circle::<false> {
-            wh,
-            wl,
-            ew: DVec3::ZERO,
-            dh: d,
-            dl: DVec3::ZERO,
-            ed: DVec3::ZERO,
-            rh,
-            rl,
-            err: 0.0,
-        }
-        .roots()
+        circle_of(wh, wl, d, r, self.q)
     }
 }
 
@@ -133,6 +127,6 @@ impl RayCast for Sphere {
 
     #[inline]
     fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        first_in(self.line_roots(ray), range)
+        self.solve(ray, FirstIn(range))
     }
 }
