@@ -5,7 +5,7 @@ use super::circle::{Circle, circle_of, exact_difference};
 use super::quadratic::{
     AllRoots, ETA, FirstIn, Question, SMALL_SPAN, U, exact_roots, in_filter_range, norm1,
 };
-use super::{Hit, RayCast, first_hit, unit_or};
+use super::{Hit, RayCast, hit_at, unit_or};
 use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -231,7 +231,7 @@ impl RayCast for Cylinder {
     /// `t = 0`.
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        first_hit(self.line_roots(ray), ray, range, |point| {
+        hit_at(self.cast_t(ray, range), ray, |point| {
             self.normal_at(point, -ray.direction())
         })
     }

@@ -78,16 +78,15 @@ pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
     }
 }
 
-/// The first hit among a surface's `roots` inside `range`, its normal
-/// from the hit point: what the quadrics' casts share.
+/// The hit at `t` (a cast's first root inside its range), its normal from
+/// the hit point: what the quadrics' casts share.
 #[inline(always)]
-pub(crate) fn first_hit(
-    roots: Roots,
+pub(crate) fn hit_at(
+    t: Option<f64>,
     ray: &Ray,
-    range: Interval,
     normal: impl FnOnce(DVec3) -> DVec3,
 ) -> Option<Hit> {
-    let t = first_in(roots, range)?;
+    let t = t?;
     let point = ray.at(t);
     Some(Hit {
         t,

@@ -4,7 +4,7 @@ use super::quadratic::{
     AllRoots, Coeffs, ETA, FirstIn, Polynomial, Question, SMALL_SPAN, U, exact_roots,
     in_filter_range,
 };
-use super::{Hit, RayCast, first_hit, unit_or};
+use super::{Hit, RayCast, hit_at, unit_or};
 use crate::float::{FmaKernel, fma, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -259,7 +259,7 @@ impl RayCast for Quadric {
     /// (against the ray where the gradient vanishes, as at a cone's apex).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        first_hit(self.line_roots(ray), ray, range, |point| {
+        hit_at(self.cast_t(ray, range), ray, |point| {
             unit_or(self.gradient(point), -ray.direction())
         })
     }

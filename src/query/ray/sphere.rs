@@ -2,7 +2,7 @@
 
 use super::circle::{circle_of, exact_difference};
 use super::quadratic::{AllRoots, FirstIn, Question, SMALL_SPAN, exact_roots};
-use super::{Hit, RayCast, first_hit, unit_or};
+use super::{Hit, RayCast, hit_at, unit_or};
 use crate::float::{FmaKernel, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
@@ -120,7 +120,7 @@ impl RayCast for Sphere {
     /// (for radius zero: against the ray).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        first_hit(self.line_roots(ray), ray, range, |point| {
+        hit_at(self.cast_t(ray, range), ray, |point| {
             unit_or(point - self.center, -ray.direction())
         })
     }
