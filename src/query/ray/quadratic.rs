@@ -180,11 +180,9 @@ fn stable_pair(k: &Coeffs, s: f64) -> (f64, f64) {
 /// smaller one, and the larger only when the smaller lies below `range`.
 /// `None` asks for the exact stage.
 ///
-/// Which exact root a certified bracket holds follows from the sign of the
-/// derivative there, which [`root_within`] certifies: `A s + B` has the
-/// sign of `-A` at the smaller root and of `A` at the larger (`A s + B =
-/// ∓sqrt(B^2 - A C)` there). A bracket that holds the other root than the
-/// one expected (the computed roots out of order) declines.
+/// Which exact root a certified bracket holds follows from [`root_side`];
+/// a bracket that holds the other root than the one expected (the
+/// computed roots out of order) declines.
 #[inline(always)]
 pub(crate) fn certified_first(
     k: &Coeffs,
@@ -195,19 +193,43 @@ pub(crate) fn certified_first(
         return Some(None);
     };
     let (t1, t2) = stable_pair(k, s);
-    let smaller = |t: f64| (k.a * t + k.b) * k.a < 0.0;
     let t1 = certified_root(k, t1, p)?;
-    if !smaller(t1) {
+    if root_side(k, t1) != Side::Smaller {
         return None;
     }
     if t1 >= range.min() {
         return Some((t1 <= range.max()).then_some(t1));
     }
     let t2 = certified_root(k, t2, p)?;
-    if smaller(t2) {
+    if root_side(k, t2) != Side::Larger {
         return None;
     }
     Some(range.contains(t2).then_some(t2))
+}
+
+/// Which of the two roots a certified bracket around `t` holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Side {
+    Smaller,
+    Larger,
+    /// `A t + B` computes as zero or NaN: not a certified bracket.
+    Unknown,
+}
+
+/// The root a bracket certified by [`root_within`] around `t` holds, from
+/// the sign of `A t + B` there, which that check certifies: the sign of
+/// `-A` at the smaller root and of `A` at the larger (`A s + B =
+/// ∓sqrt(B^2 - A C)` there).
+#[inline(always)]
+fn root_side(k: &Coeffs, t: f64) -> Side {
+    let ga = (k.a * t + k.b) * k.a;
+    if ga < 0.0 {
+        Side::Smaller
+    } else if ga > 0.0 {
+        Side::Larger
+    } else {
+        Side::Unknown
+    }
 }
 
 /// The roots when the running bound on the discriminant certifies that
@@ -231,9 +253,9 @@ pub(crate) fn certified_roots(k: &Coeffs, p: &impl Polynomial) -> Option<Roots> 
     let t1 = certified_root(k, t1, p)?;
     let t2 = certified_root(k, t2, p)?;
     // Brackets around different roots: the derivative's certified signs
-    // differ (see `certified_first`), so the count is two.
-    let ga = |t: f64| (k.a * t + k.b) * k.a;
-    (ga(t1) < 0.0 && ga(t2) > 0.0 && t1 <= t2).then_some(Roots::Two(t1, t2))
+    // differ ([`root_side`]), so the count is two.
+    let sides = (root_side(k, t1), root_side(k, t2));
+    (sides == (Side::Smaller, Side::Larger) && t1 <= t2).then_some(Roots::Two(t1, t2))
 }
 
 /// `t`, or `t` after one Newton step, certified within [`CERTIFIED_ULPS`]
