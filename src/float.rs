@@ -3,6 +3,8 @@
 //! `libm` the same instructions where the target has them (x86-64 has
 //! `sqrtsd`; `fma` in software where FMA is not enabled).
 
+use glam::DVec3;
+
 /// `sqrt(x)`, correctly rounded.
 #[inline(always)]
 pub(crate) fn sqrt(x: f64) -> f64 {
@@ -37,6 +39,33 @@ pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a - b` exactly, as a double-double `(hi, lo)` per component (TwoSum;
+/// exact unless a difference overflows): the sphere's and the cylinder's
+/// `o - point`, the triangle's rows.
+#[inline(always)]
+pub(crate) fn exact_difference(a: DVec3, b: DVec3) -> (DVec3, DVec3) {
+    let (x, y, z) = (two_sum(a.x, -b.x), two_sum(a.y, -b.y), two_sum(a.z, -b.z));
+    (DVec3::new(x.0, y.0, z.0), DVec3::new(x.1, y.1, z.1))
+}
+
+/// `a` or `b`, whichever is larger: one `maxsd`, where `f64::max` also
+/// handles NaN (for finite values, or values that overflowed to
+/// infinity, the same).
+#[inline(always)]
+pub(crate) fn larger(a: f64, b: f64) -> f64 {
+    if a > b { a } else { b }
+}
+
+/// The largest magnitude of a coordinate of `vs` (infinite where one
+/// overflowed).
+#[inline(always)]
+pub(crate) fn largest_magnitude(vs: &[DVec3]) -> f64 {
+    vs.iter().fold(0.0, |m, v| {
+        let a = v.abs();
+        larger(larger(larger(m, a.x), a.y), a.z)
+    })
 }
 
 /// `a * b` as `(p, e)` with `p = fl(a b)` and `p + e = a b` exactly, when
@@ -80,6 +109,7 @@ pub(crate) fn with_fma<K: FmaKernel>(k: &K) -> K::Output {
 /// The CPU must support the `fma` feature.
 #[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "fma")))]
 #[target_feature(enable = "fma")]
+#[inline(never)]
 unsafe fn run_with_fma<K: FmaKernel>(k: &K) -> K::Output {
     k.run()
 }

@@ -206,6 +206,36 @@ proptest! {
     }
 }
 
+/// Origins within about `2^-56` of a tilted triangle's plane, relative to
+/// its size (found by nudging a rounded point of the plane and keeping the
+/// nudges the oracle puts nearest): the numerator of `t` cancels to below
+/// the double-double evaluation's error bound there, so only the filtered
+/// stage's certificate keeps `t` within 4 units of rounding (without it,
+/// `t` is off by far more).
+#[test]
+fn origins_nearly_on_the_plane() {
+    let mut rng = SplitMix64::new(0x0f1a7e);
+    let mut found = 0;
+    for _ in 0..4000 {
+        let (_, _, v) = ray_cases::uniform(&mut rng);
+        let (a, b) = (rng.next_f64() * 0.5, rng.next_f64() * 0.5);
+        let p = v[0] + (v[1] - v[0]) * a + (v[2] - v[0]) * b;
+        let d = DVec3::new(rng.next_f64() - 0.5, rng.next_f64() - 0.5, 1.0);
+        for k in -2..=2 {
+            let o = DVec3::new(p.x, p.y, step_ulps(p.z, k));
+            let c = (o, d, v);
+            let line = oracle::line_triangle(o.to_array(), d.to_array(), v.map(|p| p.to_array()));
+            let Some((num, den)) = line.t else { continue };
+            let t = oracle::ratio_to_f64(&num, &den).abs();
+            if t != 0.0 && t < 2f64.powi(-56) {
+                found += 1;
+                check_exact(&c, Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap()).unwrap();
+            }
+        }
+    }
+    assert!(found >= 20, "only {found} origins near the plane");
+}
+
 /// Rays aimed at the interior edges and vertices of a tiled height field:
 /// the exact variant hits exactly the triangles the oracle hits, and the
 /// watertight and the exact variant hit at least one triangle of the mesh

@@ -80,6 +80,7 @@ mod insphere;
 mod orient2d;
 mod orient3d;
 pub(crate) mod orient_dir;
+pub(crate) mod plane_parameter;
 pub mod plane_side;
 mod sparse;
 pub(crate) mod wide;

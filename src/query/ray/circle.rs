@@ -207,11 +207,3 @@ pub(crate) fn circle_of<Q: Question>(
     }
     .answer(q)
 }
-
-/// `a - b` exactly, as a double-double `(hi, lo)` per component (TwoSum):
-/// the sphere's and the cylinder's `o - point`.
-#[inline(always)]
-pub(crate) fn exact_difference(a: DVec3, b: DVec3) -> (DVec3, DVec3) {
-    let (x, y, z) = (two_sum(a.x, -b.x), two_sum(a.y, -b.y), two_sum(a.z, -b.z));
-    (DVec3::new(x.0, y.0, z.0), DVec3::new(x.1, y.1, z.1))
-}

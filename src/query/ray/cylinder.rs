@@ -1,12 +1,12 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::circle::{Circle, circle_of, exact_difference};
+use super::circle::{Circle, circle_of};
 use super::quadratic::{
     AllRoots, ETA, FirstIn, Question, SMALL_SPAN, U, exact_roots, in_filter_range, norm1,
 };
 use super::{Hit, RayCast, hit_at, unit_or};
-use crate::float::{FmaKernel, two_prod, two_sum, with_fma};
+use crate::float::{FmaKernel, exact_difference, two_prod, two_sum, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;
 use crate::ray::{Interval, Ray};

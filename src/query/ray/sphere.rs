@@ -1,8 +1,9 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::circle::{circle_of, exact_difference};
+use super::circle::circle_of;
 use super::quadratic::{AllRoots, FirstIn, Question, SMALL_SPAN, exact_roots};
 use super::{Hit, RayCast, hit_at, unit_or};
+use crate::float::exact_difference;
 use crate::float::{FmaKernel, with_fma};
 use crate::predicates::grain::Grain;
 use crate::predicates::wide::Wide;

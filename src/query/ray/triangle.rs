@@ -5,7 +5,7 @@
 //! |---|---|---|---|
 //! | [`Triangle::cast_mt`] (Möller–Trumbore) | may miss on both sides | rounded formula | the reference |
 //! | [`Triangle::cast_watertight`] (Woop, Benthin, Wald) | never missed on both sides | rounded formula | about the same |
-//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | a little more |
+//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | about 3x; more within a few ulps of an edge |
 //!
 //! Every variant takes a parameter [`Interval`] and reports the hit only
 //! when its `t` lies in it. A degenerate triangle (collinear vertices,
@@ -23,7 +23,9 @@
 //! Intersection", Journal of Computer Graphics Techniques 2(1), 2013.
 
 use super::{Hit, RayCast};
-use crate::predicates::orient_dir::{orient_dir, plane_parameter};
+use crate::float::{FmaKernel, larger, largest_magnitude, with_fma};
+use crate::predicates::orient_dir::orient_dir;
+use crate::predicates::plane_parameter::plane_parameter;
 use crate::ray::{Interval, Ray};
 use crate::shape::Triangle;
 use crate::sign::Sign;
@@ -192,12 +194,18 @@ impl Triangle {
     /// Each sign comes from a floating-point filter, or when the filter
     /// cannot certify it, from the crate's exact orient3d machinery.
     ///
-    /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`, from the two
-    /// determinants evaluated exactly in integers, each rounded to `f64`,
-    /// then divided: three roundings. (The plain `f64` formula's forward
-    /// error bound cannot certify 4 units: the bound of the numerator
-    /// `(v0 - o) . ((v1 - v0) x (v2 - v0))` alone is 5 units times its
-    /// condition number, which is at least 1.)
+    /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`, each determinant
+    /// within `1.45 u` of its value, then divided (`u = 2^-53`). A filtered
+    /// stage evaluates both in double-double from error-free
+    /// transformations and certifies them with a bound computed beside
+    /// them; where it cannot (an origin within about `2^-45` of the plane
+    /// relative to its distance from the triangle, or a direction within
+    /// about `2^-45` radians of the plane) the
+    /// determinants are evaluated exactly in integers and rounded once.
+    /// (The plain `f64` formula's forward error bound cannot certify 4
+    /// units: the bound of the numerator `(v0 - o) . ((v1 - v0) x (v2 -
+    /// v0))` alone is 5 units times its condition number, which is at
+    /// least 1.)
     /// Its sign is always exact (a `t` that would round to zero from a
     /// non-zero value is the smallest subnormal of that sign), so the
     /// bound `t >= 0` of [`Interval::FORWARD`] is decided exactly; other
@@ -222,8 +230,34 @@ impl Triangle {
     /// let edge = Ray::new([0.5, 0.0, 2.0], [0.0, 0.0, -1.0]).unwrap();
     /// assert_eq!(tri.cast_exact(&edge, Interval::FORWARD).unwrap().t, 2.0);
     /// ```
+    #[inline]
     pub fn cast_exact(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
-        let [v0, v1, v2] = self.v;
+        with_fma(&ExactCast {
+            tri: self,
+            ray,
+            range,
+        })
+    }
+}
+
+/// [`Triangle::cast_exact`], compiled with FMA (and the AVX encoding it
+/// implies) where the CPU has it: the three-operand encoding spares the
+/// register copies of the hot path.
+struct ExactCast<'a> {
+    tri: &'a Triangle,
+    ray: &'a Ray,
+    range: Interval,
+}
+
+impl FmaKernel for ExactCast<'_> {
+    type Output = Option<TriangleHit>;
+
+    /// The common cases straight through: three certified signs that
+    /// differ (a miss) or agree (a hit); the others in [`uncertain_cast`].
+    #[inline(always)]
+    fn run(&self) -> Option<TriangleHit> {
+        let (tri, ray, range) = (self.tri, self.ray, self.range);
+        let [v0, v1, v2] = tri.v;
         let (o, d) = (ray.origin(), ray.direction());
         // det[d, a_j, a_k] = det[d, a_j, v_k - v_j]: with the edge as a row,
         // the rounding of the long rows (a far origin) costs relative to the
@@ -236,64 +270,100 @@ impl Triangle {
             d.dot(a[2].cross(e[1])),
             d.dot(a[0].cross(e[2])),
         ];
-        let m = a[0].abs().max(a[1].abs()).max(a[2].abs()).max_element();
-        let em = e[0].abs().max(e[1].abs()).max(e[2].abs()).max_element();
-        let dm = d.abs().max_element();
-        // Certified signs, or `None` where the filter cannot tell.
-        let filtered = if m.max(dm).max(em) <= FILTER_MAX {
-            let bound = EDGE_BOUND * dm * m * em + ABS_SLACK;
-            w.map(|w| {
-                if w > bound {
-                    Some(Sign::Positive)
-                } else if w < -bound {
-                    Some(Sign::Negative)
-                } else {
-                    None
-                }
-            })
+        // Every |a_i| is at most |a_0| + |e| (rounded, within 3 u of
+        // that, far inside EDGE_BOUND's margin): one vector instead of three.
+        let em = largest_magnitude(&e);
+        let (m, dm) = (largest_magnitude(&[a[0]]) + em, largest_magnitude(&[d]));
+        // Beyond the filter's range nothing is certified.
+        let bound = if larger(larger(m, dm), em) <= FILTER_MAX {
+            EDGE_BOUND * dm * m * em + ABS_SLACK
         } else {
-            [None; 3]
+            f64::INFINITY
         };
-        // An early miss on two certified opposite signs, before any exact work.
-        let certified = |s: Sign| filtered.contains(&Some(s));
-        if certified(Sign::Positive) && certified(Sign::Negative) {
+        let above =
+            (w[0] > bound) as u8 | ((w[1] > bound) as u8) << 1 | ((w[2] > bound) as u8) << 2;
+        let below =
+            (w[0] < -bound) as u8 | ((w[1] < -bound) as u8) << 1 | ((w[2] < -bound) as u8) << 2;
+        // An early miss on two certified opposite signs.
+        if above != 0 && below != 0 {
             return None;
         }
-        let sign = |i: usize| {
-            filtered[i]
-                .unwrap_or_else(|| orient_dir(d, o, self.v[(i + 1) % 3], self.v[(i + 2) % 3]))
-        };
-        let s = [sign(0), sign(1), sign(2)];
-        let has = |x: Sign| s.contains(&x);
-        let side = match (has(Sign::Positive), has(Sign::Negative)) {
-            (true, true) | (false, false) => return None,
-            (true, false) => 1.0,
-            (false, true) => -1.0,
-        };
-        let t = plane_parameter(o, d, v0, v1, v2);
+        if above | below != 0b111 {
+            return uncertain_cast(tri, ray, range, w, (above, below));
+        }
+        // Three certified signs alike: a hit of the line, inside the
+        // triangle; `w_i / Σ w` are the barycentrics, the same as
+        // `|w_i| / Σ |w|`.
+        let t = plane_parameter(ray, &tri.v);
         if !range.contains(t) {
             return None;
         }
-        // Barycentrics from the rounded determinants, on the exact side:
-        // zero where the exact sign is, never negative.
-        let wz = [0, 1, 2].map(|i| {
-            if s[i] == Sign::Zero {
-                0.0
-            } else {
-                (w[i] * side).max(0.0)
-            }
-        });
-        let total = wz[0] + wz[1] + wz[2];
-        let (u, v) = if total > 0.0 && total.is_finite() {
-            (wz[1] / total, wz[2] / total)
+        let total = w[0] + w[1] + w[2];
+        Some(TriangleHit {
+            t,
+            u: w[1] / total,
+            v: w[2] / total,
+        })
+    }
+}
+
+/// [`Triangle::cast_exact`] where the filter left some of the three signs
+/// uncertain (`above` and `below` mark, bit `i` for `w_i`, the certified
+/// ones): the others exact, then the hit as for certified signs, with the
+/// barycentrics of the zero signs zero.
+#[cold]
+#[inline(never)]
+fn uncertain_cast(
+    tri: &Triangle,
+    ray: &Ray,
+    range: Interval,
+    w: [f64; 3],
+    (above, below): (u8, u8),
+) -> Option<TriangleHit> {
+    let (o, d) = (ray.origin(), ray.direction());
+    let s = [0, 1, 2].map(|i| {
+        if above >> i & 1 == 1 {
+            Sign::Positive
+        } else if below >> i & 1 == 1 {
+            Sign::Negative
         } else {
-            // Every rounded determinant vanished or overflowed while the
-            // exact signs did not: weigh the non-zero ones equally.
-            let nz = s.map(|x| (x != Sign::Zero) as u8 as f64);
-            let k = nz[0] + nz[1] + nz[2];
-            (nz[1] / k, nz[2] / k)
-        };
-        Some(TriangleHit { t, u, v })
+            orient_dir(d, o, tri.v[(i + 1) % 3], tri.v[(i + 2) % 3])
+        }
+    });
+    let has = |x: Sign| s.contains(&x);
+    let side = match (has(Sign::Positive), has(Sign::Negative)) {
+        (true, true) | (false, false) => return None,
+        (true, false) => 1.0,
+        (false, true) => -1.0,
+    };
+    let t = plane_parameter(ray, &tri.v);
+    if !range.contains(t) {
+        return None;
+    }
+    let (u, v) = barycentrics(w, s, side);
+    Some(TriangleHit { t, u, v })
+}
+
+/// Barycentrics `(u, v)` from the rounded determinants `w`, on the exact
+/// side: zero where the exact sign `s` is, never negative.
+#[inline(always)]
+fn barycentrics(w: [f64; 3], s: [Sign; 3], side: f64) -> (f64, f64) {
+    let wz = [0, 1, 2].map(|i| {
+        if s[i] == Sign::Zero {
+            0.0
+        } else {
+            (w[i] * side).max(0.0)
+        }
+    });
+    let total = wz[0] + wz[1] + wz[2];
+    if total > 0.0 && total.is_finite() {
+        (wz[1] / total, wz[2] / total)
+    } else {
+        // Every rounded determinant vanished or overflowed while the
+        // exact signs did not: weigh the non-zero ones equally.
+        let nz = s.map(|x| (x != Sign::Zero) as u8 as f64);
+        let k = nz[0] + nz[1] + nz[2];
+        (nz[1] / k, nz[2] / k)
     }
 }
 
