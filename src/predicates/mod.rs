@@ -74,6 +74,7 @@
 pub(crate) mod ball;
 mod batch;
 pub(crate) mod distance;
+mod double_double;
 pub(crate) mod grain;
 mod incircle;
 mod insphere;

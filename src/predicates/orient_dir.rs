@@ -2,14 +2,18 @@
 //! coordinates: which side of the ray's line the edge passes
 //! ([`orient_dir`]), a determinant whose rows are the ray's direction `d`
 //! (an input vector) and exact differences of input points, decided by the
-//! orient3d ladder on such rows (filter, small-integer exact, sparse exact
-//! terms, big-integer exact). Where the line meets the triangle's plane is
+//! orient3d ladder on such rows (filter, double-double filter,
+//! small-integer exact, sparse exact terms, big-integer exact). Where the line meets the triangle's plane is
 //! `super::plane_parameter`.
 
+use super::double_double::{
+    MAX_MAGNITUDE, SLACK, U, cross_dd, difference, dot_dd, lanes, largest_magnitude,
+};
 use super::grain::{Grain, to_integer_i64};
 use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
 use super::sparse;
 use super::wide::Wide;
+use crate::float::{FmaKernel, with_fma};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -36,7 +40,36 @@ pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
     if certifies(margin, zsum, 0.0) {
         Sign::of_f64(det)
     } else {
-        exact(d, o, p, q)
+        with_fma(&DoubleDouble { d, o, p, q }).unwrap_or_else(|| exact(d, o, p, q))
+    }
+}
+
+/// The stage after the filter: `det[d, p - o, q - p]` in double-double
+/// (`super::double_double`), within `u |value| + 61 u^2` of its permanent,
+/// so its sign is certified where `64 u^2` of the permanent and the
+/// absolute slack fall below half its magnitude. Rays within a few ulps of
+/// an edge, but not on its line, end here. `None` where it cannot certify
+/// or a row exceeds [`MAX_MAGNITUDE`].
+struct DoubleDouble {
+    d: DVec3,
+    o: DVec3,
+    p: DVec3,
+    q: DVec3,
+}
+
+impl FmaKernel for DoubleDouble {
+    type Output = Option<Sign>;
+
+    #[inline(always)]
+    fn run(&self) -> Option<Sign> {
+        let (a, e) = (difference(self.p, self.o), difference(self.q, self.p));
+        let d = lanes(self.d);
+        // Infinite where a difference overflowed (the inputs are finite).
+        if largest_magnitude(&[a.0, e.0, d]) > MAX_MAGNITUDE {
+            return None;
+        }
+        let (det, perm) = dot_dd(d, None, &cross_dd(a, e));
+        (64.0 * U * U * perm + SLACK < 0.5 * det.abs()).then(|| Sign::of_f64(det))
     }
 }
 

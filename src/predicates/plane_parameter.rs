@@ -10,11 +10,14 @@
 //!
 //! Either way the quotient is within `4 u` (`u = 2^-53`) of the exact `t`.
 
+use super::double_double::{
+    MAX_MAGNITUDE, SLACK, U, cross_dd, difference, dot_dd, lanes, largest_magnitude,
+};
 use super::grain::{pow2, to_integer_i64};
 use super::orient_dir::{SMALL_SPAN, grains};
 use super::orient3d::det3_wide;
 use super::wide::Wide;
-use crate::float::{FmaKernel, fma, larger, two_prod, two_sum, with_fma};
+use crate::float::{FmaKernel, with_fma};
 use crate::ray::Ray;
 use glam::DVec3;
 
@@ -45,26 +48,14 @@ pub(crate) fn plane_parameter(ray: &Ray, v: &[DVec3; 3]) -> f64 {
 /// magnitude exceeds `2^300` (below that no product of three overflows),
 /// or where the quotient is not a normal number.
 ///
-/// The rows are exact double-double differences (TwoSum, Higham,
-/// *Accuracy and Stability of Numerical Algorithms*, 2nd ed., §4.3), the
-/// normal `n = e1 x e2` a double-double within `25 u^2 P_i` per component
-/// ([`cross_dd`]), each determinant `x . n` within `u |value| + 61 u^2 Σ
-/// |x_i| P_i` ([`dot_dd`]); the certificate allows `128 u^2` of the
-/// permanent, which also covers the rounding of the permanents
-/// themselves. Underflowed products err by at most `2^-1075` each, far
-/// below the absolute slack `2^-700`.
+/// Each determinant `x . (e1 x e2)` is within `u |value| + 61 u^2 Σ |x_i|
+/// P_i` of its value (`super::double_double`); the certificate allows
+/// `128 u^2` of the permanent, which also covers the rounding of the
+/// permanents themselves, and the absolute slack for underflow.
 struct FilteredParameter<'a> {
     ray: &'a Ray,
     v: &'a [DVec3; 3],
 }
-
-/// `2^-53`, the unit roundoff.
-const U: f64 = f64::EPSILON / 2.0;
-
-/// The filtered stage's absolute slack for underflowed products: at most
-/// thirty roundings of `2^-1075`, times a coordinate below `2^300`, is
-/// below `2^-760`.
-const SLACK: f64 = pow2(-700);
 
 impl FmaKernel for FilteredParameter<'_> {
     type Output = Option<f64>;
@@ -75,7 +66,7 @@ impl FmaKernel for FilteredParameter<'_> {
         let (o, d) = (self.ray.origin(), self.ray.direction());
         let (w, e1, e2) = (difference(v0, o), difference(v1, v0), difference(v2, v0));
         // Infinite where a difference overflowed (the inputs are finite).
-        if largest_magnitude(&[w.0, e1.0, e2.0, lanes(d)]) > pow2(300) {
+        if largest_magnitude(&[w.0, e1.0, e2.0, lanes(d)]) > MAX_MAGNITUDE {
             return None;
         }
         let n = cross_dd(e1, e2);
@@ -87,121 +78,6 @@ impl FmaKernel for FilteredParameter<'_> {
         let t = num / den;
         (certified(den, den_perm) && certified(num, num_perm) && t.is_normal()).then_some(t)
     }
-}
-
-/// A vector's `x, y, z` and a zero: four lanes, which the compiler keeps
-/// in one register of the FMA kernel, so that each step below is one
-/// instruction for all three components.
-type Lanes = [f64; 4];
-
-#[inline(always)]
-fn lanes(v: DVec3) -> Lanes {
-    [v.x, v.y, v.z, 0.0]
-}
-
-/// `a - b` exactly, as a double-double `(hi, lo)` per lane (TwoSum; exact
-/// unless a difference overflows).
-#[inline(always)]
-fn difference(a: DVec3, b: DVec3) -> (Lanes, Lanes) {
-    let (a, b) = (lanes(a), lanes(b));
-    let s = each(|i| two_sum(a[i], -b[i]));
-    (each(|i| s[i].0), each(|i| s[i].1))
-}
-
-/// The largest magnitude of a lane of `vs` (infinite where one
-/// overflowed).
-#[inline(always)]
-fn largest_magnitude(vs: &[Lanes]) -> f64 {
-    vs.iter().flatten().fold(0.0, |m, x| larger(m, x.abs()))
-}
-
-/// `f` on each lane.
-#[inline(always)]
-fn each<T>(f: impl Fn(usize) -> T) -> [T; 4] {
-    [f(0), f(1), f(2), f(3)]
-}
-
-/// Component `i` moved to lane `i - 1` (`j` of the cross product's `i, j,
-/// k`) or, with `K`, to lane `i - 2` (`k`); the zero stays in place.
-#[inline(always)]
-fn rotated<const K: bool>(v: Lanes) -> Lanes {
-    if K {
-        [v[2], v[0], v[1], v[3]]
-    } else {
-        [v[1], v[2], v[0], v[3]]
-    }
-}
-
-/// The normal `(ah + al) x (bh + bl)` as an unevaluated pair `hi + lo`, for
-/// `|al| <= u |ah|` and `|bl| <= u |bh|` componentwise, with each
-/// component's permanent `P_i = |ah_j bh_k| + |ah_k bh_j|` (rounded).
-struct Normal {
-    hi: Lanes,
-    lo: Lanes,
-    perm: Lanes,
-}
-
-/// [`Normal`]: `ah_j bh_k - ah_k bh_j` is exact as `hi_i` plus three error
-/// terms (two TwoProducts and a TwoSum, each below `u` of `P_i`); with the
-/// four cross terms `ah bl`, `al bh` (each below `u` of its product) they
-/// sum to at most `4 u P_i` in `lo_i`, rounded six times: within `24 u^2
-/// P_i`. The dropped `al bl` terms add `u^2 P_i`: so `|hi_i + lo_i - n_i|
-/// <= 25 u^2 P_i` and `|lo_i| <= 4 u P_i`, to first order.
-#[inline(always)]
-fn cross_dd((ah, al): (Lanes, Lanes), (bh, bl): (Lanes, Lanes)) -> Normal {
-    let (ahj, ahk, alj, alk) = (
-        rotated::<false>(ah),
-        rotated::<true>(ah),
-        rotated::<false>(al),
-        rotated::<true>(al),
-    );
-    let (bhj, bhk, blj, blk) = (
-        rotated::<false>(bh),
-        rotated::<true>(bh),
-        rotated::<false>(bl),
-        rotated::<true>(bl),
-    );
-    let p = each(|i| two_prod(ahj[i], bhk[i]));
-    let q = each(|i| two_prod(ahk[i], bhj[i]));
-    let s = each(|i| two_sum(p[i].0, -q[i].0));
-    Normal {
-        hi: each(|i| s[i].0),
-        lo: each(|i| {
-            let tail = (p[i].1 - q[i].1) + s[i].1;
-            let tail = fma(ahj[i], blk[i], tail);
-            let tail = fma(alj[i], bhk[i], tail);
-            let tail = fma(-ahk[i], blj[i], tail);
-            fma(-alk[i], bhj[i], tail)
-        }),
-        perm: each(|i| p[i].0.abs() + q[i].0.abs()),
-    }
-}
-
-/// `(xh + xl) . n` rounded (`xl` zero where `None`), for `|xl| <= u |xh|`,
-/// and the determinant's permanent `Σ |xh_i| P_i` (rounded), which bounds
-/// its error. The three high products are exact (TwoProduct) and summed
-/// exactly (TwoSum); the low terms (the products' errors, the TwoSums'
-/// errors, `xh n.lo` and `xl n.hi`) sum to at most `8 u Σ |xh_i| P_i` and
-/// are rounded at most four times on the way to any of them (each lane
-/// twice, then a tree of sums): `32 u^2`. The dropped `xl n.lo` adds `4
-/// u^2`, and `n`'s own error `25 u^2`, times `|x_i|`; the final sum rounds
-/// once more. So the result is within `u |value| + 61 u^2 Σ |xh_i| P_i` to
-/// first order.
-#[inline(always)]
-fn dot_dd(xh: Lanes, xl: Option<Lanes>, n: &Normal) -> (f64, f64) {
-    let h = each(|i| two_prod(xh[i], n.hi[i]));
-    let lo = each(|i| {
-        let lo = fma(xh[i], n.lo[i], h[i].1);
-        match xl {
-            Some(xl) => fma(xl[i], n.hi[i], lo),
-            None => lo,
-        }
-    });
-    let (s1, b1) = two_sum(h[0].0, h[1].0);
-    let (s2, b2) = two_sum(s1, h[2].0);
-    let lo = (lo[0] + lo[1]) + (lo[2] + (b1 + b2));
-    let perm = xh[0].abs() * n.perm[0] + xh[1].abs() * n.perm[1] + xh[2].abs() * n.perm[2];
-    (s2 + lo, perm)
 }
 
 /// [`plane_parameter`]'s exact stage: both determinants exact in integers.
@@ -326,117 +202,5 @@ fn quotient<const D: usize, const M: usize, const R: usize>(
         f64::from_bits(1).copysign(q)
     } else {
         t
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::hard_inputs::{SplitMix64, step_ulps};
-    use num_bigint::BigInt;
-
-    /// `v` as `m 2^e` with an integer `m`.
-    fn parts(v: f64) -> (BigInt, i32) {
-        if v == 0.0 {
-            return (BigInt::from(0), -1074);
-        }
-        let bits = v.to_bits();
-        let exp = ((bits >> 52) & 0x7ff) as i32;
-        let frac = bits & ((1 << 52) - 1);
-        let (m, e) = if exp == 0 {
-            (frac, -1074)
-        } else {
-            (frac | (1 << 52), exp - 1075)
-        };
-        let m = BigInt::from(m);
-        (if v < 0.0 { -m } else { m }, e)
-    }
-
-    /// `v` as an integer multiple of `2^lo` (`lo` at most `v`'s exponent).
-    fn at(v: f64, lo: i32) -> BigInt {
-        let (m, e) = parts(v);
-        m << (e - lo) as usize
-    }
-
-    /// Whether `|value - exact 2^(3 lo)| <= bound` exactly.
-    fn within(value: f64, exact: &BigInt, lo: i32, bound: f64) -> bool {
-        let low = [value, bound]
-            .iter()
-            .map(|&x| parts(x).1)
-            .min()
-            .unwrap()
-            .min(3 * lo);
-        let exact = exact << (3 * lo - low) as usize;
-        let err = at(value, low) - exact;
-        let err = if err < BigInt::from(0) { -err } else { err };
-        err <= at(bound, low)
-    }
-
-    fn det3(r: [[BigInt; 3]; 3]) -> BigInt {
-        let m =
-            |i: usize, j: usize, k: usize| &r[0][i] * (&r[1][j] * &r[2][k] - &r[1][k] * &r[2][j]);
-        m(0, 1, 2) + m(1, 2, 0) + m(2, 0, 1)
-    }
-
-    /// A triangle and a ray at random scales and offsets, some nearly
-    /// parallel to the plane and some with the origin nearly on it.
-    fn case(rng: &mut SplitMix64) -> (DVec3, DVec3, [DVec3; 3]) {
-        let point = |rng: &mut SplitMix64, r: f64| {
-            DVec3::new(
-                rng.next_f64() - 0.5,
-                rng.next_f64() - 0.5,
-                rng.next_f64() - 0.5,
-            ) * r
-        };
-        let scale = 2f64.powi((rng.next_u64() % 80) as i32 - 40);
-        // Half the triangles about the origin, where their edges are
-        // rarely exact differences; the others offset, where they often are.
-        let far = 2f64.powi((rng.next_u64() % 30) as i32);
-        let offset = point(rng, scale * far) * (rng.next_u64() % 2) as f64;
-        let v = [0; 3].map(|_| {
-            let size = 2f64.powi((rng.next_u64() % 8) as i32);
-            offset + point(rng, scale * size)
-        });
-        let far = 2f64.powi((rng.next_u64() % 40) as i32);
-        let o = offset + point(rng, scale * far);
-        let target = v[0] + (v[1] - v[0]) * rng.next_f64() + (v[2] - v[0]) * rng.next_f64();
-        let d = match rng.next_u64() % 3 {
-            // Nearly parallel to the plane: along an edge, nudged.
-            0 => (v[1] - v[0])
-                .to_array()
-                .map(|x| step_ulps(x, (rng.next_u64() % 9) as i64 - 4)),
-            _ => (target - o).to_array(),
-        };
-        (o, DVec3::from_array(d), v)
-    }
-
-    /// Each determinant is within the stated bound of the exact one:
-    /// `u |value| + 61 u^2` of the permanent (with a little room for the
-    /// rounding of the permanent itself).
-    #[test]
-    fn double_double_determinants_within_their_bounds() {
-        let mut rng = SplitMix64::new(0x5eed);
-        for _ in 0..20_000 {
-            let (o, d, [v0, v1, v2]) = case(&mut rng);
-            let (w, e1, e2) = (difference(v0, o), difference(v1, v0), difference(v2, v0));
-            let n = cross_dd(e1, e2);
-            let results = [dot_dd(lanes(d), None, &n), dot_dd(w.0, Some(w.1), &n)];
-            let all = [o, d, v0, v1, v2].map(|p| p.to_array()).concat();
-            let lo = all.iter().map(|&x| parts(x).1).min().unwrap();
-            let int = |p: DVec3| p.to_array().map(|x| at(x, lo));
-            let sub = |a: [BigInt; 3], b: [BigInt; 3]| [0, 1, 2].map(|i| &a[i] - &b[i]);
-            let (e1x, e2x) = (sub(int(v1), int(v0)), sub(int(v2), int(v0)));
-            let exact = [
-                det3([int(d), e1x.clone(), e2x.clone()]),
-                det3([sub(int(v0), int(o)), e1x, e2x]),
-            ];
-            for ((value, perm), exact) in results.iter().zip(&exact) {
-                let bound = U * value.abs() * (1.0 + 4.0 * U) + 64.0 * U * U * perm;
-                assert!(
-                    within(*value, exact, lo, bound),
-                    "{o:?} {d:?} {v0:?} {v1:?} {v2:?}: {value} beyond {bound}"
-                );
-            }
-        }
     }
 }
