@@ -265,11 +265,6 @@ impl FmaKernel for ExactCast<'_> {
         // rays as it does near ones.
         let a = [v0 - o, v1 - o, v2 - o];
         let e = [v2 - v1, v0 - v2, v1 - v0];
-        let w = [
-            d.dot(a[1].cross(e[0])),
-            d.dot(a[2].cross(e[1])),
-            d.dot(a[0].cross(e[2])),
-        ];
         // Every |a_i| is at most |a_0| + |e| (rounded, within 3 u of
         // that, far inside EDGE_BOUND's margin): one vector instead of three.
         let em = largest_magnitude(&e);
@@ -280,6 +275,12 @@ impl FmaKernel for ExactCast<'_> {
         } else {
             f64::INFINITY
         };
+        let (w0, w1) = (d.dot(a[1].cross(e[0])), d.dot(a[2].cross(e[1])));
+        // Two certified opposite signs: a miss before the third.
+        if (w0 > bound && w1 < -bound) || (w0 < -bound && w1 > bound) {
+            return None;
+        }
+        let w = [w0, w1, d.dot(a[0].cross(e[2]))];
         let above =
             (w[0] > bound) as u8 | ((w[1] > bound) as u8) << 1 | ((w[2] > bound) as u8) << 2;
         let below =
