@@ -2,7 +2,7 @@
 //!
 //! Each type holds the arguments of one predicate call and evaluates it with
 //! [`eval`](Orient2dInput::eval). With the `arbitrary` feature every type
-//! implements [`arbitrary::Arbitrary`]: each coordinate is a finite `f64`
+//! implements `arbitrary::Arbitrary`: each coordinate is a finite `f64`
 //! drawn from a raw 64-bit pattern (see [`finite_f64_from_bits`]), so a fuzzer
 //! reaches every finite value, subnormals and both zeros included, and never
 //! produces a NaN or an infinity.

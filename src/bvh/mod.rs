@@ -44,7 +44,7 @@
 //! popped child is tested against the best so far by its box, then by its
 //! sphere, and on the way down only the near child's sphere is tested (its
 //! box is its parent's). A leaf's distances are computed in one vector pass
-//! over all [`LEAF`] lanes; the nearest-point query rejects a leaf whose
+//! over all `LEAF` (32) lanes; the nearest-point query rejects a leaf whose
 //! least distance is certainly beyond the best, and otherwise only looks at
 //! the lanes near that least distance. At 10^6 uniform points a query visits
 //! 21.6 nodes and computes 71 distances (the report's `nearest` notes;
@@ -64,7 +64,7 @@
 //!
 //! Memory ([`SphereBvh::memory_bytes`]): 28 bytes per point (coordinates and
 //! original index, the coordinates in cache-line blocks of 8 and padded by
-//! [`LEAF`] points) plus, per
+//! `LEAF` (32) points) plus, per
 //! internal node (one per 16 to 32 points), 16 bytes of node and 64 of
 //! spheres: 30.6 to 31.9 bytes per point in all (the report's
 //! `nearest_build`).
