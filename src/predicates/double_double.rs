@@ -10,7 +10,7 @@
 //! registers.
 
 use super::grain::pow2;
-use crate::float::{fma, larger, two_prod, two_sum};
+use crate::float::{exact_difference, fma, two_prod, two_sum};
 use glam::DVec3;
 
 /// `2^-53`, the unit roundoff.
@@ -23,7 +23,7 @@ pub(super) const SLACK: f64 = pow2(-700);
 
 /// The largest magnitude of a row the bounds hold for: below it, no
 /// product of three coordinates overflows.
-pub(super) const MAX_MAGNITUDE: f64 = pow2(300);
+const MAX_MAGNITUDE: f64 = pow2(300);
 
 /// A vector's `x, y, z` and a zero: four lanes, which the compiler keeps
 /// in one register of the FMA kernel, so that each step below is one
@@ -35,20 +35,21 @@ pub(super) fn lanes(v: DVec3) -> Lanes {
     [v.x, v.y, v.z, 0.0]
 }
 
-/// `a - b` exactly, as a double-double `(hi, lo)` per lane (TwoSum; exact
-/// unless a difference overflows).
+/// `a - b` exactly, as a double-double `(hi, lo)` per lane
+/// ([`exact_difference`]).
 #[inline(always)]
 pub(super) fn difference(a: DVec3, b: DVec3) -> (Lanes, Lanes) {
-    let (a, b) = (lanes(a), lanes(b));
-    let s = each(|i| two_sum(a[i], -b[i]));
-    (each(|i| s[i].0), each(|i| s[i].1))
+    let (hi, lo) = exact_difference(a, b);
+    (lanes(hi), lanes(lo))
 }
 
-/// The largest magnitude of a lane of `vs` (infinite where one
-/// overflowed).
+/// Whether every lane of `rows` is at most [`MAX_MAGNITUDE`] in magnitude:
+/// false where a difference overflowed (or for NaN).
 #[inline(always)]
-pub(super) fn largest_magnitude(vs: &[Lanes]) -> f64 {
-    vs.iter().flatten().fold(0.0, |m, x| larger(m, x.abs()))
+pub(super) fn in_range(rows: &[Lanes]) -> bool {
+    rows.iter()
+        .flatten()
+        .fold(true, |ok, x| ok & (x.abs() <= MAX_MAGNITUDE))
 }
 
 /// `f` on each lane.

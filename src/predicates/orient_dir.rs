@@ -6,9 +6,7 @@
 //! small-integer exact, sparse exact terms, big-integer exact). Where the line meets the triangle's plane is
 //! `super::plane_parameter`.
 
-use super::double_double::{
-    MAX_MAGNITUDE, SLACK, U, cross_dd, difference, dot_dd, lanes, largest_magnitude,
-};
+use super::double_double::{SLACK, U, cross_dd, difference, dot_dd, in_range, lanes};
 use super::grain::{Grain, to_integer_i64};
 use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
 use super::sparse;
@@ -49,7 +47,7 @@ pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
 /// so its sign is certified where `64 u^2` of the permanent and the
 /// absolute slack fall below half its magnitude. Rays within a few ulps of
 /// an edge, but not on its line, end here. `None` where it cannot certify
-/// or a row exceeds [`MAX_MAGNITUDE`].
+/// or a row exceeds `double_double::MAX_MAGNITUDE`.
 struct DoubleDouble {
     d: DVec3,
     o: DVec3,
@@ -64,8 +62,7 @@ impl FmaKernel for DoubleDouble {
     fn run(&self) -> Option<Sign> {
         let (a, e) = (difference(self.p, self.o), difference(self.q, self.p));
         let d = lanes(self.d);
-        // Infinite where a difference overflowed (the inputs are finite).
-        if largest_magnitude(&[a.0, e.0, d]) > MAX_MAGNITUDE {
+        if !in_range(&[a.0, e.0, d]) {
             return None;
         }
         let (det, perm) = dot_dd(d, None, &cross_dd(a, e));

@@ -10,9 +10,7 @@
 //!
 //! Either way the quotient is within `4 u` (`u = 2^-53`) of the exact `t`.
 
-use super::double_double::{
-    MAX_MAGNITUDE, SLACK, U, cross_dd, difference, dot_dd, lanes, largest_magnitude,
-};
+use super::double_double::{SLACK, U, cross_dd, difference, dot_dd, in_range, lanes};
 use super::grain::{pow2, to_integer_i64};
 use super::orient_dir::{SMALL_SPAN, grains};
 use super::orient3d::det3_wide;
@@ -65,8 +63,7 @@ impl FmaKernel for FilteredParameter<'_> {
         let [v0, v1, v2] = *self.v;
         let (o, d) = (self.ray.origin(), self.ray.direction());
         let (w, e1, e2) = (difference(v0, o), difference(v1, v0), difference(v2, v0));
-        // Infinite where a difference overflowed (the inputs are finite).
-        if largest_magnitude(&[w.0, e1.0, e2.0, lanes(d)]) > MAX_MAGNITUDE {
+        if !in_range(&[w.0, e1.0, e2.0, lanes(d)]) {
             return None;
         }
         let n = cross_dd(e1, e2);
