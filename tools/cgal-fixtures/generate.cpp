@@ -70,6 +70,14 @@ using Case = std::vector<double>;
   std::exit(1);
 }
 
+// Writes a fixture file whole, or dies.
+void write_file(const std::string& path, const std::string& data) {
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) die("cannot write %s", path.c_str());
+  if (std::fwrite(data.data(), 1, data.size(), f) != data.size() || std::fclose(f) != 0)
+    die("cannot write %s", path.c_str());
+}
+
 // ---------------------------------------------------------------------------
 // Randomness
 
@@ -296,10 +304,7 @@ class Writer {
 
   void finish() {
     end_section();
-    FILE* f = std::fopen(path_.c_str(), "wb");
-    if (!f) die("cannot write %s", path_.c_str());
-    if (std::fwrite(out_.data(), 1, out_.size(), f) != out_.size() || std::fclose(f) != 0)
-      die("cannot write %s", path_.c_str());
+    write_file(path_, out_);
     std::fprintf(stderr, "%-10s %6d cases  %8zu bytes  %s\n", kind_.c_str(), total_, out_.size(), path_.c_str());
   }
 
@@ -997,10 +1002,7 @@ class NearestSet {
       std::fprintf(stderr, "%-18s %-15s %4d cases  (tied points%s; at a point %d)  plain f64 wrong on %d\n",
                    kind.c_str(), sections_[s].name.c_str(), st.n, sizes.c_str(), st.at_point, st.naive_wrong);
     }
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) die("cannot write %s", path.c_str());
-    if (std::fwrite(out.data(), 1, out.size(), f) != out.size() || std::fclose(f) != 0)
-      die("cannot write %s", path.c_str());
+    write_file(path, out);
     std::fprintf(stderr, "%-18s %5zu points %4zu queries  %8zu bytes  %s\n", kind.c_str(), points_.size(),
                  queries_.size(), out.size(), path.c_str());
   }
@@ -1945,10 +1947,7 @@ class RayWriter {
 
   void finish(const std::string& path) {
     end_section();
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) die("cannot write %s", path.c_str());
-    if (std::fwrite(out_.data(), 1, out_.size(), f) != out_.size() || std::fclose(f) != 0)
-      die("cannot write %s", path.c_str());
+    write_file(path, out_);
     std::fprintf(stderr, "%-12s %5d cases  %8zu bytes  %s\n", kind_.c_str(), total_, out_.size(), path.c_str());
   }
 
@@ -3320,9 +3319,9 @@ Case degenerate_tri(Rng& r, bool aimed) {
 
 // One ray through a point of the mesh (an interior edge point or vertex),
 // against every triangle sharing it.
-std::vector<Case> mesh_rays(Rng& r, bool tilted, bool vertex) {
-  Mesh m(r, tilted);
-  I3 X;
+// A random inner vertex (or a point of an inner edge) of the mesh, as X,
+// and the triangles sharing it.
+std::vector<int> shared_point(Rng& r, const Mesh& m, bool vertex, I3& X) {
   std::vector<int> ts;
   if (vertex) {
     int v = m.inner_vertex(r);
@@ -3334,6 +3333,13 @@ std::vector<Case> mesh_rays(Rng& r, bool tilted, bool vertex) {
     ts = m.tris_with(edge.first, edge.second);
   }
   if (ts.size() != (vertex ? 6u : 2u)) die("mesh: %zu triangles at a shared %s", ts.size(), vertex ? "vertex" : "edge");
+  return ts;
+}
+
+std::vector<Case> mesh_rays(Rng& r, bool tilted, bool vertex) {
+  Mesh m(r, tilted);
+  I3 X;
+  std::vector<int> ts = shared_point(r, m, vertex, X);
   P3 o, d;
   ray_through(r, X, m.e, m.normal, o, d);
   std::vector<Case> out;
@@ -3345,16 +3351,7 @@ std::vector<Case> mesh_rays(Rng& r, bool tilted, bool vertex) {
 std::vector<Case> mesh_rays_moved(Rng& r, bool tilted, bool vertex) {
   Mesh m(r, tilted);
   I3 X;
-  std::vector<int> ts;
-  if (vertex) {
-    int v = m.inner_vertex(r);
-    X = m.pts[v];
-    ts = m.tris_with(v);
-  } else {
-    auto edge = r.pick(m.inner_edges);
-    X = m.edge_point(r, edge);
-    ts = m.tris_with(edge.first, edge.second);
-  }
+  std::vector<int> ts = shared_point(r, m, vertex, X);
   P3 x = m.at(X);
   double& c = x[r.next() % 3];
   c = step_ulps(c, r.sign());
