@@ -122,6 +122,24 @@ impl Interval {
     pub fn contains(&self, t: f64) -> bool {
         self.min <= t && t <= self.max
     }
+
+    /// Whether a cast may report a hit at the computed parameter `t`: `t`
+    /// is finite and inside the interval. Every cast of the crate reports
+    /// only such hits, so a crossing whose parameter lies beyond `f64`'s
+    /// range (it rounds to an infinity) is no hit, and the cast looks on to
+    /// a later crossing; one within the cast's stated error of `f64::MAX`
+    /// may go either way. A NaN `t` is not admitted.
+    ///
+    /// ```
+    /// use exactray::ray::Interval;
+    /// assert!(Interval::FORWARD.admits(1e308));
+    /// assert!(!Interval::FORWARD.admits(f64::INFINITY));
+    /// assert!(Interval::FORWARD.contains(f64::INFINITY));
+    /// ```
+    #[inline]
+    pub fn admits(&self, t: f64) -> bool {
+        self.contains(t) && t.is_finite()
+    }
 }
 
 #[cfg(test)]

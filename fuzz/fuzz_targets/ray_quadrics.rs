@@ -62,12 +62,11 @@ fuzz_target!(|input: (u8, [u64; 16])| {
     };
     let want = want.answer();
     // cast_t certifies only the roots it needs, by its own path: the first
-    // root t >= 0 (whose sign is exact). A root the oracle rounds to +-MAX
-    // may lie beyond f64's range, where the crate returns an infinity and
-    // no hit; such cases are not compared.
-    let beyond = want.roots.iter().any(|w| w.abs() == f64::MAX);
-    if want.count.is_some() && !beyond {
-        let expected = want.roots.iter().copied().find(|&w| w >= 0.0);
+    // root t >= 0 (whose sign is exact), and by the crate's policy
+    // (`Interval::admits`) never a root beyond f64's range.
+    if want.count.is_some()
+        && let Some(expected) = want.first_admitted(0.0, f64::INFINITY, 5)
+    {
         assert_eq!(
             first.is_some(),
             expected.is_some(),

@@ -112,6 +112,26 @@ pub struct LineAnswer {
     pub roots: Vec<f64>,
 }
 
+impl LineAnswer {
+    /// What a cast in `[min, max]` whose roots are within `ulps` units of
+    /// rounding must return, by the crate's policy (`Interval::admits`: a
+    /// hit only at a finite t): `Some(Some(w))` the first root in the range
+    /// (correctly rounded), `Some(None)` no hit (no root in the range, or
+    /// only roots beyond f64's range), `None` where either is right (the
+    /// first root in the range lies within `ulps` units of f64::MAX, where
+    /// the cast's rounding may overflow). For a finite root count.
+    pub fn first_admitted(&self, min: f64, max: f64, ulps: u32) -> Option<Option<f64>> {
+        let band = f64::MAX * (1.0 - f64::from(ulps) * f64::EPSILON);
+        for &w in &self.roots {
+            if !(min <= w && w <= max) || w.is_infinite() {
+                continue;
+            }
+            return (w.abs() < band).then_some(Some(w));
+        }
+        Some(None)
+    }
+}
+
 /// Order-preserving map from finite f64 to integers.
 pub fn ordered(t: f64) -> i64 {
     let bits = t.to_bits() as i64;
@@ -253,7 +273,8 @@ impl Quadratic {
 
     /// The count and the correctly rounded roots (ties to even), found by
     /// bisection over the doubles on the monotone branch each root lies on.
-    /// Roots beyond f64's range come out as +-f64::MAX.
+    /// A root beyond f64's range (|root| > f64::MAX exactly) comes out as
+    /// an infinity of its sign, as the crate's casts return it.
     pub fn answer(&self) -> LineAnswer {
         let count = self.count();
         let roots = match count {
@@ -289,10 +310,19 @@ impl Quadratic {
 
     /// The root on a branch where `sign(p(t)) * dir` increases with `t`,
     /// within ordered bounds `[lo, hi]`.
+    /// A branch that reaches +-f64::MAX without its sign change has its
+    /// root beyond f64's range: an infinity.
     fn round_root(&self, dir: i8, lo: i64, hi: i64) -> f64 {
         let lo = lo.max(ordered(-f64::MAX));
         let hi = hi.min(ordered(f64::MAX));
-        self.bisect(|t| dir * self.sign_at(t), lo, hi)
+        let f = |t: &Dyadic| dir * self.sign_at(t);
+        if hi == ordered(f64::MAX) && f(&Dyadic::from_f64(f64::MAX)) < 0 {
+            return f64::INFINITY;
+        }
+        if lo == ordered(-f64::MAX) && f(&Dyadic::from_f64(-f64::MAX)) > 0 {
+            return f64::NEG_INFINITY;
+        }
+        self.bisect(f, lo, hi)
     }
 
     /// The double nearest the point where the monotone step function

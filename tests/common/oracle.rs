@@ -410,6 +410,27 @@ pub fn ratio_in(num: &BigInt, den: &BigInt, min: f64, max: f64) -> bool {
     above && below
 }
 
+/// The crate's policy for a crossing at the exact parameter `num / den`
+/// (`den > 0`) in `[min, max]`, for a cast whose `t` is within `k` units of
+/// rounding: `Some(true)` where it must be a hit, `Some(false)` where it
+/// must not (outside the range, or beyond `f64`'s range: a cast reports
+/// only finite `t`, `Interval::admits`), `None` where either is right (the
+/// exact `t` within `k` units of `f64::MAX`, where its rounding may
+/// overflow).
+pub fn hit_policy(num: &BigInt, den: &BigInt, min: f64, max: f64, k: u32) -> Option<bool> {
+    if !ratio_in(num, den, min, max) {
+        return Some(false);
+    }
+    let inner = f64::MAX * (1.0 - f64::from(k) * f64::EPSILON);
+    if ratio_in(num, den, -inner, inner) {
+        Some(true)
+    } else if ratio_in(num, den, -f64::MAX, f64::MAX) {
+        None
+    } else {
+        Some(false)
+    }
+}
+
 /// Whether `|t - num / den| <= k 2^-53 |num / den|` (`den > 0`), exactly:
 /// `|t den - num| 2^53 <= k |num|`.
 pub fn within_units(t: f64, num: &BigInt, den: &BigInt, k: u32) -> bool {

@@ -51,7 +51,7 @@ impl RayCast for Cone {
         let height = |t: f64| (ray.at(t) - self.apex).dot(a);
         let on_lateral = |t: f64| {
             let h = height(t);
-            range.contains(t) && h >= 0.0 && (!self.capped || h <= s)
+            range.admits(t) && h >= 0.0 && (!self.capped || h <= s)
         };
         let lateral = match self.line_roots(ray) {
             Roots::One(t) => on_lateral(t).then_some(t),
@@ -63,7 +63,7 @@ impl RayCast for Cone {
             .then(|| (s - (ray.origin() - self.apex).dot(a)) / dh)
             .filter(|&t| {
                 let radial = (ray.at(t) - self.apex).cross(a);
-                range.contains(t) && radial.dot(radial) <= self.radius * self.radius * s
+                range.admits(t) && radial.dot(radial) <= self.radius * self.radius * s
             });
         let (t, normal) = match (lateral, base) {
             (Some(tl), Some(tb)) if tb < tl => (tb, a.normalize()),

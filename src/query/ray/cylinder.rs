@@ -255,7 +255,7 @@ impl RayCast for CappedCylinder {
         let height = |x: DVec3| (x - side.point).dot(a);
         let mut best: Option<Hit> = None;
         let mut consider = |t: f64, normal: &dyn Fn(DVec3) -> DVec3| {
-            if range.contains(t) && best.is_none_or(|b| t < b.t) {
+            if range.admits(t) && best.is_none_or(|b| t < b.t) {
                 let point = ray.at(t);
                 best = Some(Hit {
                     t,

@@ -3,6 +3,13 @@
 //!
 //! Every shape implements [`RayCast`]. Quadrics also give all the roots of
 //! the whole line against their surface.
+//!
+//! One policy for parameters beyond `f64`'s range, for every cast: a hit
+//! is reported only at a finite `t` ([`Interval::admits`]). A crossing
+//! whose exact parameter exceeds `f64::MAX` in magnitude is no hit (the
+//! cast looks on to a later crossing in the range); one within the cast's
+//! stated error of `f64::MAX` may go either way. `line_roots`, which
+//! reports the whole line, returns such roots as infinities of their sign.
 
 use crate::ray::{Interval, Ray};
 use glam::DVec3;
@@ -26,7 +33,8 @@ pub struct Hit {
 
 /// A shape a ray can be cast against.
 pub trait RayCast {
-    /// The hit with the smallest `t` inside `range`, or `None`.
+    /// The hit with the smallest `t` inside `range`, or `None`; never a
+    /// hit at an infinite `t` (see the module's policy).
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit>;
 
     /// The `t` of [`RayCast::cast`]'s hit, without its point and normal:
@@ -55,12 +63,13 @@ mod sphere;
 
 use crate::roots::Roots;
 
-/// The smallest finite root inside `range` (a root beyond `f64`'s range,
-/// returned as an infinity, is no hit); for [`Roots::All`] (the line lies
-/// on the surface) the point of `range` nearest `t = 0`.
+/// The smallest root that `range` admits ([`Interval::admits`]: a root
+/// beyond `f64`'s range, returned as an infinity, is no hit); for
+/// [`Roots::All`] (the line lies on the surface) the point of `range`
+/// nearest `t = 0`.
 #[inline]
 pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
-    let inside = |t: f64| range.contains(t) && t.is_finite();
+    let inside = |t: f64| range.admits(t);
     match roots {
         Roots::None => None,
         Roots::One(t) => inside(t).then_some(t),

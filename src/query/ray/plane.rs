@@ -25,7 +25,7 @@ impl RayCast for Plane {
     /// flipped towards the ray).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let t = self.line_parameter(ray).filter(|&t| range.contains(t))?;
+        let t = self.line_parameter(ray).filter(|&t| range.admits(t))?;
         Some(Hit {
             t,
             point: ray.at(t),

@@ -198,13 +198,13 @@ pub(crate) fn certified_first(
         return None;
     }
     if t1 >= range.min() {
-        return Some((t1 <= range.max()).then_some(t1));
+        return Some(range.admits(t1).then_some(t1));
     }
     let t2 = certified_root(k, t2, p)?;
     if root_side(k, t2) != Side::Larger {
         return None;
     }
-    Some(range.contains(t2).then_some(t2))
+    Some(range.admits(t2).then_some(t2))
 }
 
 /// Which of the two roots a certified bracket around `t` holds.

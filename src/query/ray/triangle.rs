@@ -8,7 +8,9 @@
 //! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | about 3x; more within a few ulps of an edge |
 //!
 //! Every variant takes a parameter [`Interval`] and reports the hit only
-//! when its `t` lies in it. A degenerate triangle (collinear vertices,
+//! when its computed `t` is finite and lies in it ([`Interval::admits`]):
+//! a crossing whose parameter lies beyond `f64`'s range is no hit, the
+//! policy of every cast in the crate. A degenerate triangle (collinear vertices,
 //! decided exactly when it is built) is always a miss. A ray whose line
 //! lies in the triangle's plane (a coplanar ray) or runs parallel to it is
 //! always a miss for the exact variant, and for the others wherever their
@@ -135,7 +137,7 @@ impl Triangle {
             return None;
         }
         let t = e2.dot(q) * inv;
-        range.contains(t).then_some(TriangleHit { t, u, v })
+        range.admits(t).then_some(TriangleHit { t, u, v })
     }
 
     /// Watertight (Woop, Benthin and Wald 2013): the vertices are moved to
@@ -257,30 +259,15 @@ impl FmaKernel for ExactCast<'_> {
     #[inline(always)]
     fn run(&self) -> Option<TriangleHit> {
         let (tri, ray, range) = (self.tri, self.ray, self.range);
-        let [v0, v1, v2] = tri.v;
-        let (o, d) = (ray.origin(), ray.direction());
-        // det[d, a_j, a_k] = det[d, a_j, v_k - v_j]: with the edge as a row,
-        // the rounding of the long rows (a far origin) costs relative to the
-        // edge's length, not to the distance, and the filter certifies far
-        // rays as it does near ones.
-        let a = [v0 - o, v1 - o, v2 - o];
-        let e = [v2 - v1, v0 - v2, v1 - v0];
-        // Every |a_i| is at most |a_0| + |e| (rounded, within 3 u of
-        // that, far inside EDGE_BOUND's margin): one vector instead of three.
-        let em = largest_magnitude(&e);
-        let (m, dm) = (largest_magnitude(&[a[0]]) + em, largest_magnitude(&[d]));
-        // Beyond the filter's range nothing is certified.
-        let bound = if larger(larger(m, dm), em) <= FILTER_MAX {
-            EDGE_BOUND * dm * m * em + ABS_SLACK
-        } else {
-            f64::INFINITY
-        };
-        let (w0, w1) = (d.dot(a[1].cross(e[0])), d.dot(a[2].cross(e[1])));
+        let d = ray.direction();
+        let filter = EdgeFilter::of(ray.origin(), d, &tri.v);
+        let bound = filter.bound;
+        let (w0, w1) = (filter.w(d, 0), filter.w(d, 1));
         // Two certified opposite signs: a miss before the third.
         if (w0 > bound && w1 < -bound) || (w0 < -bound && w1 > bound) {
             return None;
         }
-        let w = [w0, w1, d.dot(a[0].cross(e[2]))];
+        let w = [w0, w1, filter.w(d, 2)];
         let above =
             (w[0] > bound) as u8 | ((w[1] > bound) as u8) << 1 | ((w[2] > bound) as u8) << 2;
         let below =
@@ -296,7 +283,7 @@ impl FmaKernel for ExactCast<'_> {
         // triangle; `w_i / Σ w` are the barycentrics, the same as
         // `|w_i| / Σ |w|`.
         let t = plane_parameter(ray, &tri.v);
-        if !range.contains(t) {
+        if !range.admits(t) {
             return None;
         }
         let total = w[0] + w[1] + w[2];
@@ -305,6 +292,53 @@ impl FmaKernel for ExactCast<'_> {
             u: w[1] / total,
             v: w[2] / total,
         })
+    }
+}
+
+/// The exact cast's filter: the rounded edge determinants `w_i = det[d,
+/// a_(i+1), e_i]` (`a_i = v_i - o`, `e_i = v_(i+2) - v_(i+1)`) and one bound
+/// on their errors; a `w_i` beyond `bound` has the exact sign of
+/// `orient_dir(d, o, v_(i+1), v_(i+2))`.
+struct EdgeFilter {
+    a: [DVec3; 3],
+    e: [DVec3; 3],
+    bound: f64,
+}
+
+impl EdgeFilter {
+    #[inline(always)]
+    fn of(o: DVec3, d: DVec3, [v0, v1, v2]: &[DVec3; 3]) -> EdgeFilter {
+        // det[d, a_j, a_k] = det[d, a_j, v_k - v_j]: with the edge as a row,
+        // the rounding of the long rows (a far origin) costs relative to the
+        // edge's length, not to the distance, and the filter certifies far
+        // rays as it does near ones.
+        let a = [*v0 - o, *v1 - o, *v2 - o];
+        let e = [*v2 - *v1, *v0 - *v2, *v1 - *v0];
+        // Every |a_i| is at most |a_0| + |e| (rounded, within 3 u of
+        // that, far inside EDGE_BOUND's margin): one vector instead of three.
+        let em = largest_magnitude(&e);
+        let (m, dm) = (largest_magnitude(&[a[0]]) + em, largest_magnitude(&[d]));
+        // Beyond the filter's range nothing is certified. The bound's own
+        // products are taken with the constant last: a product that
+        // underflows (absolute error at most 2^-1075) is then scaled by at
+        // most one factor below FILTER_MAX = 2^330 and by EDGE_BOUND <
+        // 2^-46, so the computed bound falls short of `EDGE_BOUND D M E` by
+        // less than 3 * 2^-790 beyond its three relative roundings (inside
+        // EDGE_BOUND's margin), far inside ABS_SLACK. (Taking the constant
+        // first, `EDGE_BOUND * dm` underflowed to zero for a subnormal
+        // direction and the filter certified signs it could not: issue 12.)
+        let bound = if larger(larger(m, dm), em) <= FILTER_MAX {
+            m * em * dm * EDGE_BOUND + ABS_SLACK
+        } else {
+            f64::INFINITY
+        };
+        EdgeFilter { a, e, bound }
+    }
+
+    /// `w_i`, rounded.
+    #[inline(always)]
+    fn w(&self, d: DVec3, i: usize) -> f64 {
+        d.dot(self.a[(i + 1) % 3].cross(self.e[i]))
     }
 }
 
@@ -338,7 +372,7 @@ fn uncertain_cast(
         (false, true) => -1.0,
     };
     let t = plane_parameter(ray, &tri.v);
-    if !range.contains(t) {
+    if !range.admits(t) {
         return None;
     }
     let (u, v) = barycentrics(w, s, side);
@@ -479,7 +513,7 @@ fn sheared_hit(
     // the scaled direction; the scale converts it back. One division.
     let inv = 1.0 / (det * dz);
     let t = (e0 * a[2] + e1 * b[2] + e2 * c[2]) * inv * scale;
-    if !range.contains(t) {
+    if !range.admits(t) {
         return None;
     }
     Some(TriangleHit {
@@ -524,5 +558,75 @@ impl RayCast for Triangle {
     #[inline]
     fn hits(&self, ray: &Ray, range: Interval) -> bool {
         self.cast_watertight(ray, range).is_some() && self.normal() != DVec3::ZERO
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every sign the filter certifies is the exact one, on directions
+    /// whose largest coordinate is subnormal (and their multiples by
+    /// `2^k`): issue 12's fuzzer finding, a huge and nearly flat triangle
+    /// where the bound once underflowed to zero and a wrong sign was
+    /// certified; and a huge well-shaped triangle, whose signs the filter
+    /// must still certify.
+    #[test]
+    fn certified_signs_are_exact_for_subnormal_directions() {
+        let b = f64::from_bits;
+        let finding = (
+            DVec3::new(b(0x1348), b(0x482b488eb0a3bf00), b(0x25000048)),
+            DVec3::new(b(0x12000000), 0.0, b(0x000000d100000000)),
+            [
+                DVec3::new(
+                    b(0x060000000a000000),
+                    b(0x25fd166cffd81300),
+                    b(0x4848486840c729fe),
+                ),
+                DVec3::new(
+                    b(0x0000545454544848),
+                    b(0x0000000000393b00),
+                    b(0x00250600002f0000),
+                ),
+                DVec3::new(
+                    b(0x5454545454000000),
+                    b(0x5454545054545454),
+                    b(0x4854000ccf0a5454),
+                ),
+            ],
+        );
+        let big = crate::predicates::grain::pow2(200);
+        let well_shaped = (
+            DVec3::ZERO,
+            DVec3::new(b(3), b(5), b(1 << 40)),
+            [
+                DVec3::new(-1.0, -1.0, 1.0),
+                DVec3::new(1.0, -1.0, 1.0),
+                DVec3::new(0.0, 1.0, 1.0),
+            ]
+            .map(|p| p * big),
+        );
+        for (case, (o, d, v)) in [finding, well_shaped].into_iter().enumerate() {
+            let mut certified = 0;
+            for k in 0..60 {
+                let d = d * crate::predicates::grain::pow2(k);
+                let filter = EdgeFilter::of(o, d, &v);
+                for i in 0..3 {
+                    let w = filter.w(d, i);
+                    if w.abs() > filter.bound {
+                        certified += 1;
+                        let exact = orient_dir(d, o, v[(i + 1) % 3], v[(i + 2) % 3]);
+                        assert_eq!(
+                            Sign::of_f64(w),
+                            exact,
+                            "case {case}, 2^{k} d, edge {i}: {w:e}"
+                        );
+                    }
+                }
+            }
+            // The finding is too ill-conditioned for the filter at any
+            // scale; the well-shaped triangle is certified at every one.
+            assert_eq!(certified, [0, 180][case], "case {case}");
+        }
     }
 }

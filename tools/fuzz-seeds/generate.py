@@ -1,0 +1,131 @@
+#!/usr/bin/env python3
+"""Writes the committed seed corpora under fuzz/corpus/<target>/, so that
+short fuzz runs (CI's 30 seconds) start from the hard regions: cases that
+mix exponents from the subnormal range to 1e300 inside one case, exact
+degeneracies (rays through vertices and along edges, tangent and
+on-surface lines), and every fuzzer finding kept as a regression test.
+
+Deterministic (a fixed seed), so re-running it rewrites the same files:
+
+    python3 tools/fuzz-seeds/generate.py            # write
+    python3 tools/fuzz-seeds/generate.py --check    # fail if not up to date
+
+Byte layouts, as each target decodes its input with `arbitrary` (integers
+little-endian, fields in order):
+- ray_triangle: a mode byte (even: raw bit patterns), then 15 u64 bit
+  patterns: origin, direction, v0, v1, v2.
+- ray_quadrics: a mode byte (0 sphere, 1 cylinder, 5 quadric: bit 1 clear
+  means raw bit patterns), then 16 u64 bit patterns.
+- roots: 3 u64 bit patterns (a, b, c).
+"""
+import hashlib
+import random
+import struct
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2] / "fuzz" / "corpus"
+PER_TARGET = 200
+
+
+def bits(x: float) -> int:
+    return struct.unpack("<Q", struct.pack("<d", x))[0]
+
+
+def mixed(rng: random.Random) -> float:
+    """A value from anywhere between the subnormals and 1e300, or an
+    exact small one, with a random sign."""
+    kind = rng.randrange(6)
+    if kind == 0:
+        v = struct.unpack("<d", struct.pack("<Q", rng.randrange(1, 1 << 52)))[0]  # subnormal
+    elif kind == 1:
+        v = float(rng.randrange(-8, 9))
+    else:
+        v = rng.uniform(1.0, 2.0) * 2.0 ** rng.randrange(-1074, 997)
+    return -v if rng.random() < 0.5 else v
+
+
+def vec(rng, f=None):
+    f = f or mixed
+    return [f(rng) for _ in range(3)]
+
+
+def packed(mode: int, values) -> bytes:
+    return bytes([mode]) + b"".join(struct.pack("<Q", v if isinstance(v, int) else bits(v)) for v in values)
+
+
+def triangle_cases(rng):
+    # Issue 12's finding, as reported.
+    finding = [0x0000000000001348, 0x482B488EB0A3BF00, 0x0000000025000048,
+               0x0000000012000000, 0x0000000000000000, 0x000000D100000000,
+               0x060000000A000000, 0x25FD166CFFD81300, 0x4848486840C729FE,
+               0x0000545454544848, 0x0000000000393B00, 0x00250600002F0000,
+               0x5454545454000000, 0x5454545054545454, 0x4854000CCF0A5454]
+    yield packed(0, finding)
+    while True:
+        o, d, v = vec(rng), vec(rng), [vec(rng) for _ in range(3)]
+        edit = rng.randrange(5)
+        k = rng.randrange(3)
+        if edit == 0:  # aimed at a vertex
+            d = [v[k][i] - o[i] for i in range(3)]
+        elif edit == 1:  # along an edge
+            o, d = v[k], [v[(k + 1) % 3][i] - v[k][i] for i in range(3)]
+        elif edit == 2:  # two vertices merged
+            v[(k + 1) % 3] = v[k]
+        if any(abs(x) == float("inf") or x != x for x in d + o):
+            continue
+        yield packed(2 * rng.randrange(128), o + d + [x for p in v for x in p])
+
+
+def quadric_cases(rng):
+    while True:
+        mode = rng.choice([0, 1, 5])
+        values = [mixed(rng) for _ in range(16)]
+        if mode == 0 and rng.random() < 0.5:
+            # A ray through the centre: a sphere of radius |o - c|.
+            values[6:9] = values[0:3]
+        yield packed(mode, values)
+
+
+def roots_cases(rng):
+    while True:
+        a, b, c = mixed(rng), mixed(rng), mixed(rng)
+        if rng.random() < 0.3:
+            c = b * b / (4 * a) if a != 0 and abs(b) < 1e150 else c  # near-double roots
+        yield b"".join(struct.pack("<Q", bits(x)) for x in (a, b, c))
+
+
+def corpus(name, cases, seed):
+    rng = random.Random(seed)
+    out = {}
+    for data in cases(rng):
+        out[hashlib.sha1(data).hexdigest()] = data
+        if len(out) == PER_TARGET:
+            return name, out
+
+
+def main() -> int:
+    check = "--check" in sys.argv[1:]
+    stale = 0
+    for name, files in [corpus("ray_triangle", triangle_cases, 12),
+                        corpus("ray_quadrics", quadric_cases, 13),
+                        corpus("roots", roots_cases, 14)]:
+        folder = ROOT / name
+        have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
+        if check:
+            if have != files:
+                print(f"{folder}: not up to date")
+                stale += 1
+            continue
+        folder.mkdir(parents=True, exist_ok=True)
+        for p in folder.glob("*"):
+            if p.name not in files:
+                p.unlink()
+        for k, data in files.items():
+            (folder / k).write_bytes(data)
+        print(f"{folder}: {len(files)} inputs")
+    return 1 if stale else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
