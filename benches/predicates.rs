@@ -35,7 +35,7 @@ mod orient3d;
 mod plane_side;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use exactray::hard_inputs::InputClass;
+use exactray::testing::InputClass;
 use framework::Config;
 use signs::SignFamily;
 use std::time::Duration;

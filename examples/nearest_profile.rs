@@ -26,7 +26,7 @@ mod nearest;
 #[path = "report/output.rs"]
 mod output;
 
-use exactray::SphereBvh;
+use exactray::bvh::SphereBvh;
 use glam::DVec3;
 use nearest::{Dist, KiddoTree};
 use std::hint::black_box;

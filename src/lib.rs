@@ -2,57 +2,67 @@
 #![deny(missing_docs)]
 //! # exactray
 //!
-//! Geometric queries that are fast and right: exact orientation, in-circle,
-//! in-sphere and plane-side predicates for **every** finite `f64` input
-//! ([`predicates`]), an exact nearest-point index over a hierarchy of
-//! bounding spheres ([`bvh`], with `alloc`), and a stable quadratic solver
-//! ([`roots`]), with a measured speed-against-error report beside the crates
-//! a user would otherwise pick (see the README).
+//! Geometric queries that are fast and right: every answer that can be
+//! exact is exact, and every floating-point answer carries a certified
+//! error. By floor, lowest first (ARCHITECTURE.md):
+//!
+//! - [`predicates`]: exact orientation, in-circle, in-sphere, plane-side
+//!   and distance-comparison signs for **every** finite `f64` input;
+//!   [`roots`]: real roots of quadratics, each within 4 ulps;
+//!   [`interval`]: the parameter intervals of rays.
+//! - [`shape`]: spheres, cylinders, cones, quadrics, planes, disks and
+//!   triangles, validated at construction.
+//! - [`query::ray`]: rays and where they meet each shape ([`RayCast`]),
+//!   with exact hit or miss where the shape allows it; [`raster`]: 2D
+//!   triangle rasterization with exact pixel coverage.
+//! - [`bvh`] (with `alloc`): an exact nearest-point index over a hierarchy
+//!   of bounding spheres.
+//! - [`testing`]: hard inputs, proptest strategies and `Arbitrary` input
+//!   types for users' own tests; [`prelude`]: the vocabulary in one `use`.
+//!
+//! A speed-against-error report measures all of it beside the crates a
+//! user would otherwise pick (see the README).
 //!
 //! ```
-//! use exactray::{orient3d, same_side, Sign, SideRelation};
+//! use exactray::prelude::*;
 //! use glam::DVec3;
 //! let (x0, x1, x2) = (DVec3::ZERO, DVec3::X, DVec3::Y);
 //! assert_eq!(orient3d(x0, x1, x2, DVec3::Z), Sign::Positive);
 //! assert_eq!(same_side(x0, x1, x2, DVec3::Z, -DVec3::Z), SideRelation::Opposite);
+//! let tri = Triangle::new(x0, x1, x2).unwrap();
+//! let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
+//! assert_eq!(tri.cast_exact(&ray, Interval::FORWARD).unwrap().t, 1.0);
 //! ```
 //!
 //! Features: `std` (default; implies `alloc`), `rayon` (default; parallel
-//! batch queries and builds of the index), `alloc` (the [`bvh`] module), `proptest`
-//! (strategies for hard inputs, for users' property tests), `arbitrary`
-//! (`Arbitrary` for the predicate input types, for users' fuzz targets).
+//! batch queries and builds of the index), `alloc` (the [`bvh`] module),
+//! `proptest` (the strategies of [`testing`]), `arbitrary` (`Arbitrary` for
+//! the input types of [`testing`], for users' fuzz targets).
+//!
+//! [`RayCast`]: query::ray::RayCast
 
 #[cfg(feature = "alloc")]
 extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+mod arith;
 #[cfg(feature = "alloc")]
 pub mod bvh;
-pub mod error;
-mod extended;
-mod float;
-pub mod hard_inputs;
-pub mod inputs;
-pub mod point;
+mod error;
+pub mod interval;
+mod point;
 pub mod predicates;
+pub mod prelude;
 pub mod query;
 pub mod raster;
-pub mod ray;
 pub mod roots;
 pub mod shape;
-pub mod sign;
-#[cfg(feature = "proptest")]
-pub mod strategies;
+mod sign;
+pub mod testing;
 
-#[cfg(feature = "alloc")]
-pub use bvh::SphereBvh;
 pub use error::InputError;
 pub use point::{IntoDVec2, IntoDVec3};
-pub use predicates::{
-    SideRelation, incircle, insphere, orient2d, orient3d, same_side, side_of_plane, try_incircle,
-    try_insphere, try_orient2d, try_orient3d, try_same_side, try_side_of_plane,
-};
 pub use sign::Sign;
 
 // The README's examples are compiled and run as doctests.

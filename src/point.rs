@@ -7,7 +7,7 @@ use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 /// `[f32; 2]`, `(f64, f64)`. The conversion to `DVec2` is exact.
 ///
 /// ```
-/// use exactray::{orient2d, Sign};
+/// use exactray::prelude::*;
 /// // f32 and f64 inputs mix freely; the f32 values widen exactly.
 /// assert_eq!(orient2d(glam::Vec2::ZERO, [1.0f64, 0.0], (0.0, 1.0)), Sign::Positive);
 /// ```

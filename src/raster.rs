@@ -35,14 +35,12 @@
 //! pixel, and no allocation: covered pixels are reported one span per row
 //! to a callback, which fills them as it likes.
 
+use crate::arith::roundoff::U;
 use crate::error::InputError;
 use crate::point::IntoDVec2;
 use crate::predicates::{check_finite2, orient2d};
 use crate::sign::Sign;
 use glam::DVec2;
-
-/// `2^-53`, the unit roundoff.
-const U: f64 = f64::EPSILON / 2.0;
 
 /// One edge `a -> b` of a triangle whose interior lies to the left of
 /// `b - a` (positive [`orient2d`]), with its function stepped over pixels.

@@ -8,8 +8,8 @@ mod common;
 use common::oracle;
 use core::cmp::Ordering;
 use exactray::bvh::{Nearest, QueryStats};
-use exactray::hard_inputs::{SplitMix64, step_ulps};
-use exactray::{InputError, SphereBvh};
+use exactray::testing::{SplitMix64, step_ulps};
+use exactray::{InputError, bvh::SphereBvh};
 use glam::DVec3;
 use proptest::prelude::*;
 

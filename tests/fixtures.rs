@@ -17,10 +17,10 @@ mod common;
 
 use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use common::oracle;
-use exactray::SphereBvh;
 use exactray::bvh::Nearest;
-use exactray::ray::Interval;
-use exactray::ray::Ray;
+use exactray::bvh::SphereBvh;
+use exactray::interval::Interval;
+use exactray::query::ray::Ray;
 use exactray::roots::Roots;
 use exactray::shape::{Cylinder, Quadric, Sphere, Triangle};
 use num_traits::Zero;
@@ -188,7 +188,7 @@ fn crate_orient2d(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_sign_case::<6>(f)?;
     Ok(compare_signs(
         want,
-        exactray::orient2d(p2(&v, 0), p2(&v, 1), p2(&v, 2)).as_i8(),
+        exactray::predicates::orient2d(p2(&v, 0), p2(&v, 1), p2(&v, 2)).as_i8(),
     ))
 }
 
@@ -202,7 +202,7 @@ fn oracle_orient2d(f: &[&str]) -> Result<Verdict, String> {
 
 fn crate_orient3d(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_sign_case::<12>(f)?;
-    let got = exactray::orient3d(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3));
+    let got = exactray::predicates::orient3d(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3));
     Ok(compare_signs(want, got.as_i8()))
 }
 
@@ -216,7 +216,8 @@ fn oracle_orient3d(f: &[&str]) -> Result<Verdict, String> {
 
 fn crate_plane_side(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_sign_case::<15>(f)?;
-    let got = exactray::same_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
+    let got =
+        exactray::predicates::same_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
     Ok(compare_signs(want, got.as_i8()))
 }
 

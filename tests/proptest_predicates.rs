@@ -10,15 +10,17 @@
 mod common;
 
 use common::oracle;
-use exactray::hard_inputs::{
+use exactray::testing::finite_f64_from_bits;
+use exactray::testing::{
     InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
     plane_side_case,
 };
-use exactray::inputs::finite_f64_from_bits;
 use exactray::{
-    InputError, SideRelation, Sign, incircle, insphere, orient2d, orient3d, same_side,
-    side_of_plane, try_incircle, try_insphere, try_orient2d, try_orient3d, try_same_side,
-    try_side_of_plane,
+    InputError, Sign,
+    predicates::{
+        SideRelation, incircle, insphere, orient2d, orient3d, same_side, side_of_plane,
+        try_incircle, try_insphere, try_orient2d, try_orient3d, try_same_side, try_side_of_plane,
+    },
 };
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use proptest::prelude::*;

@@ -7,8 +7,8 @@ mod common;
 
 use common::oracle;
 use exactray::InputError;
-use exactray::hard_inputs::SplitMix64;
 use exactray::raster::rasterize_triangle;
+use exactray::testing::SplitMix64;
 use proptest::prelude::*;
 
 type P = [f64; 2];

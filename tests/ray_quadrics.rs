@@ -9,8 +9,9 @@ mod common;
 
 use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use exactray::InputError;
+use exactray::interval::Interval;
+use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
-use exactray::ray::{Interval, Ray};
 use exactray::roots::Roots;
 use exactray::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
 use proptest::prelude::*;

@@ -9,11 +9,12 @@ mod common;
 
 use common::oracle;
 use common::ray_cases::{self, Case, TiledMesh};
-use exactray::hard_inputs::{SplitMix64, step_ulps};
+use exactray::interval::Interval;
+use exactray::query::ray::EXACT_T_ULPS;
+use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
-use exactray::query::ray::triangle::EXACT_T_ULPS;
-use exactray::ray::{Interval, Ray};
 use exactray::shape::Triangle;
+use exactray::testing::{SplitMix64, step_ulps};
 use glam::DVec3;
 use proptest::prelude::*;
 

@@ -9,7 +9,8 @@ mod common;
 
 use common::oracle;
 use exactray::{
-    SideRelation, Sign, incircle, insphere, orient2d, orient3d, same_side, side_of_plane,
+    Sign,
+    predicates::{SideRelation, incircle, insphere, orient2d, orient3d, same_side, side_of_plane},
 };
 use glam::{DVec2, DVec3};
 

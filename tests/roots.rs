@@ -8,8 +8,8 @@ mod common;
 
 use common::oracle;
 use exactray::InputError;
-use exactray::hard_inputs::step_ulps;
 use exactray::roots::{Roots, solve_quadratic, try_solve_quadratic};
+use exactray::testing::step_ulps;
 use proptest::prelude::*;
 
 fn check(a: f64, b: f64, c: f64) -> Result<(), TestCaseError> {

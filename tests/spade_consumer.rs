@@ -8,8 +8,11 @@
 //! face across an edge, and the outer boundary is convex. A disagreement is a
 //! bug in one of the two, and the exact oracle tests of this crate say which.
 
-use exactray::hard_inputs::{InputClass, SplitMix64, incircle_case, orient2d_case};
-use exactray::{Sign, incircle, orient2d};
+use exactray::testing::{InputClass, SplitMix64, incircle_case, orient2d_case};
+use exactray::{
+    Sign,
+    predicates::{incircle, orient2d},
+};
 use glam::DVec2;
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, InsertionError, Point2, Triangulation};

@@ -1,7 +1,7 @@
 //! What every family shares: the run configuration, the report row, methods
 //! under test and the timing loop. Also compiled into `benches/predicates.rs`.
 
-use exactray::hard_inputs::SplitMix64;
+use exactray::testing::SplitMix64;
 use std::hint::black_box;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};

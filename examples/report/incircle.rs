@@ -4,7 +4,7 @@
 use crate::framework::method;
 use crate::oracle;
 use crate::signs::{SignFamily, coord, sign_of};
-use exactray::hard_inputs::incircle_case;
+use exactray::testing::incircle_case;
 use glam::DVec2;
 
 type Case = [DVec2; 4];
@@ -25,7 +25,7 @@ pub fn family() -> SignFamily<Case> {
         oracle: |&[a, b, c, d]| oracle::incircle(a.into(), b.into(), c.into(), d.into()),
         methods: vec![
             method("exactray", |&[a, b, c, d]: &Case| {
-                exactray::incircle(a, b, c, d).as_i8()
+                exactray::predicates::incircle(a, b, c, d).as_i8()
             }),
             method("naive", naive),
             method("robust", |&[a, b, c, d]: &Case| {

@@ -5,7 +5,7 @@
 use crate::framework::method;
 use crate::oracle;
 use crate::signs::{SignFamily, coord3, minus_sign_of};
-use exactray::hard_inputs::insphere_case;
+use exactray::testing::insphere_case;
 use glam::DVec3;
 
 type Case = [DVec3; 5];
@@ -35,7 +35,7 @@ pub fn family() -> SignFamily<Case> {
         },
         methods: vec![
             method("exactray", |&[a, b, c, d, e]: &Case| {
-                exactray::insphere(a, b, c, d, e).as_i8()
+                exactray::predicates::insphere(a, b, c, d, e).as_i8()
             }),
             method("naive", naive),
             method("robust", |p: &Case| {

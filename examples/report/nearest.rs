@@ -15,9 +15,9 @@
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
 use crate::oracle;
-use exactray::SphereBvh;
+use exactray::bvh::SphereBvh;
 use exactray::bvh::{Nearest, QueryStats};
-use exactray::hard_inputs::SplitMix64;
+use exactray::testing::SplitMix64;
 use glam::DVec3;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use rstar::RTree;
@@ -187,7 +187,7 @@ fn grid_side(n: usize) -> usize {
 
 /// `v` moved by -1, 0 or 1 ulp.
 fn nudge(rng: &mut SplitMix64, v: f64) -> f64 {
-    exactray::hard_inputs::step_ulps(v, (rng.next_u64() % 3) as i64 - 1)
+    exactray::testing::step_ulps(v, (rng.next_u64() % 3) as i64 - 1)
 }
 
 /// Relative error bound on `fl(|p - q|^2)` (five roundings per term, `5u`

@@ -3,7 +3,7 @@
 use crate::framework::method;
 use crate::oracle;
 use crate::signs::{SignFamily, batch, coord, sign_of};
-use exactray::hard_inputs::orient2d_case;
+use exactray::testing::orient2d_case;
 use glam::DVec2;
 
 type Case = [DVec2; 3];
@@ -15,7 +15,7 @@ pub fn family() -> SignFamily<Case> {
         oracle: |&[a, b, c]| oracle::orient2d(a.into(), b.into(), c.into()),
         methods: vec![
             method("exactray", |&[a, b, c]: &Case| {
-                exactray::orient2d(a, b, c).as_i8()
+                exactray::predicates::orient2d(a, b, c).as_i8()
             }),
             batch("exactray-batch", exactray::predicates::orient2d_many),
             method("naive", |&[a, b, c]: &Case| {

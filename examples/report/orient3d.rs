@@ -4,7 +4,7 @@
 use crate::framework::method;
 use crate::oracle;
 use crate::signs::{SignFamily, batch, coord3, minus_sign_of, sign_of};
-use exactray::hard_inputs::orient3d_case;
+use exactray::testing::orient3d_case;
 use glam::DVec3;
 
 type Case = [DVec3; 4];
@@ -29,7 +29,7 @@ pub fn family() -> SignFamily<Case> {
         oracle: |&[a, b, c, d]| oracle::orient3d(a.into(), b.into(), c.into(), d.into()),
         methods: vec![
             method("exactray", |&[a, b, c, d]: &Case| {
-                exactray::orient3d(a, b, c, d).as_i8()
+                exactray::predicates::orient3d(a, b, c, d).as_i8()
             }),
             batch("exactray-batch", exactray::predicates::orient3d_many),
             method("naive", |&[a, b, c, d]: &Case| naive(a, b, c, d)),

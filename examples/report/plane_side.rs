@@ -6,7 +6,7 @@ use crate::framework::method;
 use crate::oracle;
 use crate::orient3d;
 use crate::signs::{NAN, SignFamily};
-use exactray::hard_inputs::plane_side_case;
+use exactray::testing::plane_side_case;
 use glam::DVec3;
 
 type Case = [DVec3; 5];
@@ -31,7 +31,7 @@ pub fn family() -> SignFamily<Case> {
         },
         methods: vec![
             method("exactray", |&[x0, x1, x2, p, q]: &Case| {
-                exactray::same_side(x0, x1, x2, p, q).as_i8()
+                exactray::predicates::same_side(x0, x1, x2, p, q).as_i8()
             }),
             method("naive", |c: &Case| by_orient3d(orient3d::naive, c)),
             method("robust", |c: &Case| by_orient3d(orient3d::robust, c)),

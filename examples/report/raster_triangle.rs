@@ -18,8 +18,9 @@
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
 use crate::oracle;
+use exactray::interval::Interval;
+use exactray::query::ray::Ray;
 use exactray::raster::rasterize_triangle;
-use exactray::ray::{Interval, Ray};
 use exactray::shape::Triangle;
 use glam::{DVec2, DVec3};
 
@@ -34,7 +35,7 @@ pub struct Case {
 /// The triangle's legs, by area in pixels.
 pub const SIZES: [u32; 6] = [8, 128, 2048, 8192, 32768, 100352];
 
-pub fn case(rng: &mut exactray::hard_inputs::SplitMix64, area: u32) -> Case {
+pub fn case(rng: &mut exactray::testing::SplitMix64, area: u32) -> Case {
     let leg = (2.0 * area as f64).sqrt();
     let angle = rng.next_f64() * std::f64::consts::TAU;
     let (s, c) = angle.sin_cos();

@@ -6,10 +6,11 @@
 use crate::framework::method;
 use crate::line_oracle::Quadratic;
 use crate::ray_family::{RayFamily, cube, first_forward, naive_first, parry_cast, uniform, unit};
-use exactray::hard_inputs::SplitMix64;
+use exactray::interval::Interval;
+use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
-use exactray::ray::{Interval, Ray};
 use exactray::shape::Cylinder;
+use exactray::testing::SplitMix64;
 use glam::DVec3;
 
 #[derive(Clone)]

@@ -6,7 +6,7 @@
 
 use crate::framework::{Config, Measure, Row, median, note, time_methods};
 use crate::line_oracle::ulps_between;
-use exactray::hard_inputs::SplitMix64;
+use exactray::testing::SplitMix64;
 use std::fmt::Write;
 
 /// Draws one case of an input class.

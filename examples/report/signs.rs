@@ -3,7 +3,7 @@
 
 use crate::framework::{Config, Measure, Row, time_methods};
 use exactray::Sign;
-use exactray::hard_inputs::{InputClass, SplitMix64};
+use exactray::testing::{InputClass, SplitMix64};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 

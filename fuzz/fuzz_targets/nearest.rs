@@ -10,10 +10,10 @@
 #![no_main]
 
 use arbitrary::{Arbitrary, Result, Unstructured};
-use exactray::SphereBvh;
 use exactray::bvh::Nearest;
-use exactray::hard_inputs::step_ulps;
-use exactray::inputs::finite_f64_from_bits;
+use exactray::bvh::SphereBvh;
+use exactray::testing::finite_f64_from_bits;
+use exactray::testing::step_ulps;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
 

@@ -2,7 +2,7 @@
 //!
 //! The first byte picks the predicate and how its input is built:
 //! - raw: the crate's `Arbitrary` input types, every finite bit pattern;
-//! - raw plus edits, or a `hard_inputs` case plus edits: the edits (ulp
+//! - raw plus edits, or a `testing` generator's case plus edits: the edits (ulp
 //!   nudges, shared coordinates, points on the line or plane of others,
 //!   power-of-two scalings, tiny offsets) make the configuration nearly or
 //!   exactly degenerate, so the fuzzer reaches the exact stages and not only
@@ -15,12 +15,12 @@
 #![no_main]
 
 use arbitrary::{Arbitrary, Result, Unstructured};
-use exactray::hard_inputs::{self, InputClass, SplitMix64, step_ulps};
-use exactray::inputs::{
+use exactray::testing::{self, InputClass, SplitMix64, step_ulps};
+use exactray::testing::{
     IncircleInput, InsphereInput, Orient2dInput, Orient3dInput, PlaneSideInput,
     finite_f64_from_bits,
 };
-use exactray::{InputError, SideRelation, Sign};
+use exactray::{InputError, Sign, predicates::SideRelation};
 use glam::{DVec2, DVec3};
 use libfuzzer_sys::fuzz_target;
 
@@ -121,11 +121,11 @@ fn raw(pred: Pred, u: &mut Unstructured<'_>) -> Result<Vec<f64>> {
 
 fn hard(pred: Pred, class: InputClass, rng: &mut SplitMix64) -> Vec<f64> {
     match pred {
-        Pred::Orient2d => flat2(&hard_inputs::orient2d_case(class, rng)),
-        Pred::Orient3d => flat3(&hard_inputs::orient3d_case(class, rng)),
-        Pred::Incircle => flat2(&hard_inputs::incircle_case(class, rng)),
-        Pred::Insphere => flat3(&hard_inputs::insphere_case(class, rng)),
-        Pred::SameSide => flat3(&hard_inputs::plane_side_case(class, rng)),
+        Pred::Orient2d => flat2(&testing::orient2d_case(class, rng)),
+        Pred::Orient3d => flat3(&testing::orient3d_case(class, rng)),
+        Pred::Incircle => flat2(&testing::incircle_case(class, rng)),
+        Pred::Insphere => flat3(&testing::insphere_case(class, rng)),
+        Pred::SameSide => flat3(&testing::plane_side_case(class, rng)),
     }
 }
 
@@ -246,13 +246,13 @@ fn check(pred: Pred, c: &[f64]) {
             exactray::predicates::orient2d_many(&[[p2(0), p2(1), p2(2)]; 9], &mut out);
             assert_eq!(out, [want; 9], "batch: {}", ctx());
             assert_eq!(
-                exactray::orient2d(p2(1), p2(0), p2(2)),
+                exactray::predicates::orient2d(p2(1), p2(0), p2(2)),
                 -want,
                 "swapped: {}",
                 ctx()
             );
             assert_eq!(
-                exactray::orient2d(p2(1), p2(2), p2(0)),
+                exactray::predicates::orient2d(p2(1), p2(2), p2(0)),
                 want,
                 "rotated: {}",
                 ctx()
@@ -276,7 +276,7 @@ fn check(pred: Pred, c: &[f64]) {
             exactray::predicates::orient3d_many(&[[p3(0), p3(1), p3(2), p3(3)]; 9], &mut out);
             assert_eq!(out, [want; 9], "batch: {}", ctx());
             assert_eq!(
-                exactray::orient3d(p3(3), p3(1), p3(2), p3(0)),
+                exactray::predicates::orient3d(p3(3), p3(1), p3(2), p3(0)),
                 -want,
                 "swapped: {}",
                 ctx()
@@ -298,7 +298,7 @@ fn check(pred: Pred, c: &[f64]) {
             assert_eq!(input.try_eval(), Ok(want), "{}", ctx());
             // The lifted determinant alternates in all four points.
             assert_eq!(
-                exactray::incircle(p2(3), p2(1), p2(2), p2(0)),
+                exactray::predicates::incircle(p2(3), p2(1), p2(2), p2(0)),
                 -want,
                 "swapped: {}",
                 ctx()
@@ -320,7 +320,7 @@ fn check(pred: Pred, c: &[f64]) {
             let want = Sign::from_i8(oracle::insphere(a3(0), a3(1), a3(2), a3(3), a3(4)));
             assert_eq!(input.try_eval(), Ok(want), "{}", ctx());
             assert_eq!(
-                exactray::insphere(p3(4), p3(1), p3(2), p3(3), p3(0)),
+                exactray::predicates::insphere(p3(4), p3(1), p3(2), p3(3), p3(0)),
                 -want,
                 "swapped: {}",
                 ctx()

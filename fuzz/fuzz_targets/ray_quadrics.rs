@@ -7,11 +7,12 @@
 //! degrees occur.
 #![no_main]
 
-use exactray::inputs::finite_f64_from_bits;
+use exactray::interval::Interval;
+use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
-use exactray::ray::{Interval, Ray};
 use exactray::roots::Roots;
 use exactray::shape::{Cylinder, Quadric, Sphere};
+use exactray::testing::finite_f64_from_bits;
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../tests/common/line_oracle.rs"]

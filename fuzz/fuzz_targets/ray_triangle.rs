@@ -13,11 +13,12 @@
 #![no_main]
 
 use arbitrary::{Arbitrary, Unstructured};
-use exactray::hard_inputs::SplitMix64;
-use exactray::inputs::finite_f64_from_bits;
-use exactray::query::ray::triangle::EXACT_T_ULPS;
-use exactray::ray::{Interval, Ray};
+use exactray::interval::Interval;
+use exactray::query::ray::EXACT_T_ULPS;
+use exactray::query::ray::Ray;
 use exactray::shape::Triangle;
+use exactray::testing::SplitMix64;
+use exactray::testing::finite_f64_from_bits;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
 

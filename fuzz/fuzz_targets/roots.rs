@@ -7,8 +7,8 @@
 //! exact root.
 #![no_main]
 
-use exactray::inputs::finite_f64_from_bits;
 use exactray::roots::{Roots, solve_quadratic};
+use exactray::testing::finite_f64_from_bits;
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../tests/common/oracle.rs"]

@@ -13,7 +13,7 @@ impl SphereBvh {
     /// when `out` has another length; nothing is written then.
     ///
     /// ```
-    /// use exactray::SphereBvh;
+    /// use exactray::bvh::SphereBvh;
     /// use glam::DVec3;
     /// let bvh = SphereBvh::from_points(&[DVec3::ZERO, DVec3::X]).unwrap();
     /// let queries = [DVec3::new(0.9, 0.0, 0.0), DVec3::new(-1.0, 0.0, 0.0)];

@@ -4,7 +4,7 @@
 
 use super::sphere::{merge, norm2_root_up, sum_up, unscale_up};
 use super::{Child, LEAF, Lanes, Node, SphereBvh, Spheres, first_part};
-use crate::predicates::grain::unit_pow2;
+use crate::arith::exponent::unit_pow2;
 use alloc::vec;
 use alloc::vec::Vec;
 use glam::DVec3;

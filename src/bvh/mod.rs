@@ -76,9 +76,9 @@ mod radius;
 mod sphere;
 mod traverse;
 
+use crate::arith::exponent::unit_pow2;
 use crate::error::InputError;
 use crate::point::IntoDVec3;
-use crate::predicates::grain::unit_pow2;
 use alloc::vec::Vec;
 use glam::DVec3;
 
@@ -210,7 +210,7 @@ pub(crate) struct Spheres {
 /// docs](self)). Queries never allocate.
 ///
 /// ```
-/// use exactray::SphereBvh;
+/// use exactray::bvh::SphereBvh;
 /// let points = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
 /// let bvh = SphereBvh::from_points(&points).unwrap();
 /// let hit = bvh.nearest([0.9, 0.2, 0.0]).unwrap();
@@ -248,7 +248,7 @@ impl SphereBvh {
     /// [`MAX_POINTS`] points.
     ///
     /// ```
-    /// use exactray::{InputError, SphereBvh};
+    /// use exactray::prelude::*;
     /// assert!(SphereBvh::from_points::<[f64; 3]>(&[]).unwrap().nearest([0.0; 3]).is_none());
     /// let err = SphereBvh::from_points(&[[0.0, f64::NAN, 0.0]]).unwrap_err();
     /// assert_eq!(err, InputError::NonFinite { argument: "points" });
@@ -284,7 +284,7 @@ impl SphereBvh {
     /// or NaN radius; [`InputError::TooManyItems`] above [`MAX_POINTS`].
     ///
     /// ```
-    /// use exactray::SphereBvh;
+    /// use exactray::bvh::SphereBvh;
     /// let balls = [([0.0, 0.0, 0.0], 1.0), ([5.0, 0.0, 0.0], 3.0)];
     /// let bvh = SphereBvh::from_spheres(&balls).unwrap();
     /// // 2.5 from the first ball's surface, 0.5 from the second's.
@@ -346,7 +346,7 @@ impl SphereBvh {
     /// the exact distance from the centre to each of the leaf's points.
     ///
     /// ```
-    /// use exactray::SphereBvh;
+    /// use exactray::bvh::SphereBvh;
     /// let bvh = SphereBvh::from_points(&[[0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]).unwrap();
     /// let (center, radius, indices) = bvh.leaf_spheres().next().unwrap();
     /// assert_eq!((center.x, indices), (1.0, &[0u32, 1][..]));
@@ -442,4 +442,4 @@ pub(crate) fn distance(p: DVec3, q: DVec3) -> f64 {
     sqrt(v.x * v.x + v.y * v.y + v.z * v.z) / s * unscale
 }
 
-pub(crate) use crate::float::sqrt;
+pub(crate) use crate::arith::std_or_libm::sqrt;

@@ -4,18 +4,16 @@
 use super::sphere::UNDERFLOW_DISTANCE;
 use super::traverse::{Visitor, reach_of, scale_of, walk};
 use super::{Child, Counter, LEAF, Nearest, QueryStats, SphereBvh, sqrt};
+use crate::arith::exponent::TINY;
+use crate::arith::roundoff::U;
 use crate::error::InputError;
 use crate::point::IntoDVec3;
 use crate::predicates::ball::{cmp_ball_distances, cmp_length_to_sum};
 use crate::predicates::cmp_lengths;
 use crate::predicates::distance;
-use crate::predicates::grain::TINY;
 use crate::sign::Sign;
 use core::marker::PhantomData;
 use glam::DVec3;
-
-/// `u = 2^-53`.
-const U: f64 = f64::EPSILON / 2.0;
 
 /// Half-width of the band of computed squared distances that may hide a
 /// tie. Each computed squared distance is within `gamma_5 < 5.01u` (relative)
@@ -69,7 +67,7 @@ const _: () = assert!(LEAF <= 32);
 /// squares' sums below 12.
 #[inline]
 fn no_overflow(tree: &SphereBvh, q: DVec3) -> bool {
-    tree.max_abs.max(q.abs().max_element()) < crate::predicates::grain::pow2(1022)
+    tree.max_abs.max(q.abs().max_element()) < crate::arith::exponent::pow2(1022)
 }
 
 /// How a query measures items: points by computed squared scaled distance,
@@ -319,7 +317,7 @@ impl SphereBvh {
     /// infinite coordinate (see [`try_nearest`](Self::try_nearest)).
     ///
     /// ```
-    /// use exactray::SphereBvh;
+    /// use exactray::bvh::SphereBvh;
     /// let bvh = SphereBvh::from_points(&[[1.0, 0.0, 0.0], [0.0, 1.0 + f64::EPSILON, 0.0]]).unwrap();
     /// // The two squared distances round to the same f64; point 0 is nearer.
     /// let hit = bvh.nearest([0.0, 0.0, 0.0]).unwrap();
@@ -343,7 +341,7 @@ impl SphereBvh {
     /// [`nearest`](Self::nearest), adding the work it did to `stats`.
     ///
     /// ```
-    /// use exactray::{SphereBvh, bvh::QueryStats};
+    /// use exactray::{bvh::SphereBvh, bvh::QueryStats};
     /// let points: Vec<[f64; 3]> = (0..1000).map(|i| [i as f64, 0.0, 0.0]).collect();
     /// let bvh = SphereBvh::from_points(&points).unwrap();
     /// let mut stats = QueryStats::default();
@@ -472,7 +470,7 @@ impl SphereBvh {
     /// Returns 0 (and leaves `out` alone) when `q` is not finite.
     ///
     /// ```
-    /// use exactray::{SphereBvh, bvh::Nearest};
+    /// use exactray::{bvh::SphereBvh, bvh::Nearest};
     /// use glam::DVec3;
     /// let points: Vec<[f64; 3]> = (0..10).map(|i| [i as f64, 0.0, 0.0]).collect();
     /// let bvh = SphereBvh::from_points(&points).unwrap();

@@ -52,7 +52,7 @@ impl SphereBvh {
     /// [`InputError::InvalidRadius`] for a negative or NaN `r`.
     ///
     /// ```
-    /// use exactray::SphereBvh;
+    /// use exactray::bvh::SphereBvh;
     /// let points: Vec<[f64; 3]> = (0..10).map(|i| [i as f64, 0.0, 0.0]).collect();
     /// let bvh = SphereBvh::from_points(&points).unwrap();
     /// let mut hits = Vec::new();

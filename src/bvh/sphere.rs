@@ -6,16 +6,17 @@
 //! neither overflow nor lose the small differences to underflow.
 
 use super::sqrt;
-use crate::predicates::grain::{TINY, pow2};
+use crate::arith::exponent::{TINY, pow2};
 use glam::DVec3;
 
-/// `u = 2^-53`, the unit roundoff.
-const U: f64 = f64::EPSILON / 2.0;
+use crate::arith::roundoff::{U, gamma};
 
 /// Relative margin of a computed squared norm of computed differences: the
-/// difference, the square and two additions round once each, `gamma_5 < 5.01u`
-/// (Higham 2002, Lemma 3.1); `8u` also covers the multiplication by it.
-const NORM2_UP: f64 = 1.0 + 8.0 * U;
+/// difference, the square and two additions round once each, `gamma(5)`
+/// (Higham 2002, Lemma 3.1), and the multiplication by this factor once
+/// more: `(1 + gamma(5)) (1 + u)^2 <= 1 + gamma(7) < 1 + gamma(8)`, the last
+/// leaving room for the rounding of the constant.
+const NORM2_UP: f64 = 1.0 + gamma(8);
 
 /// Relative margin for one `sqrt`, product or sum rounded to nearest, and
 /// the multiplication by this factor itself: `(1 - u)^2 (1 + 4u) > 1`.

@@ -10,11 +10,9 @@
 
 use super::sphere::UNDERFLOW_DISTANCE;
 use super::{Child, Counter, LEAF, Lanes, SphereBvh, Spheres, first_part, sqrt};
-use crate::predicates::grain::unit_pow2;
+use crate::arith::exponent::unit_pow2;
+use crate::arith::roundoff::U;
 use glam::DVec3;
-
-/// `u = 2^-53`.
-const U: f64 = f64::EPSILON / 2.0;
 
 /// The prune, without a square root: a node whose sphere has scaled radius
 /// `r` and whose centre is at computed squared scaled distance `d2` holds no

@@ -4,12 +4,12 @@
 //!
 //! Square roots are removed by squaring with case analysis, so every sign is
 //! that of an integer polynomial in the inputs at their finest common bit
-//! (the big-integer representation of `wide.rs`; `f64` filters run before
+//! (the big-integer representation of `arith::fixed_int`; `f64` filters run before
 //! these, in the callers). Inputs must be finite and radii non-negative.
 
 use super::distance::cmp_lengths;
-use super::grain::Grain;
-use super::wide::Wide;
+use crate::arith::exponent::Grain;
+use crate::arith::fixed_int::FixedInt;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -29,8 +29,8 @@ pub(crate) fn cmp_length_to_sum(q: DVec3, c: DVec3, r1: f64, r2: f64) -> Sign {
         return Sign::Zero;
     };
     let a = squared::<W2>(c, q, lo);
-    let sum = Wide::<W1>::from_f64(r1, lo).add(&Wide::<W1>::from_f64(r2, lo));
-    a.sub(&Wide::<W2>::mul(&sum, &sum)).sign()
+    let sum = FixedInt::<W1>::from_f64(r1, lo).add(&FixedInt::<W1>::from_f64(r2, lo));
+    a.sub(&FixedInt::<W2>::mul(&sum, &sum)).sign()
 }
 
 /// The sign of `max(0, |c1 - q| - r1) - max(0, |c2 - q| - r2)`, exactly.
@@ -54,7 +54,7 @@ pub(crate) fn cmp_ball_distances(q: DVec3, (c1, r1): (DVec3, f64), (c2, r2): (DV
     // sign(sqrt(b) - sqrt(a) - (-k)), the same form with k > 0.
     let a = squared::<W2>(c1, q, lo);
     let b = squared::<W2>(c2, q, lo);
-    let k = Wide::<W1>::from_f64(r1, lo).sub(&Wide::<W1>::from_f64(r2, lo));
+    let k = FixedInt::<W1>::from_f64(r1, lo).sub(&FixedInt::<W1>::from_f64(r2, lo));
     if k.is_negative() {
         -root_difference_sign(&b, &a, &k.neg())
     } else {
@@ -66,8 +66,8 @@ pub(crate) fn cmp_ball_distances(q: DVec3, (c1, r1): (DVec3, f64), (c2, r2): (DV
 /// iff `a > b + 2k sqrt(b) + k^2`, i.e. `m > 2k sqrt(b)` with
 /// `m = a - b - k^2`; when `m <= 0` the answer is `m`'s side (or zero when
 /// `m = 0` and `k sqrt(b) = 0`), otherwise the sign of `m^2 - 4 k^2 b`.
-fn root_difference_sign(a: &Wide<W2>, b: &Wide<W2>, k: &Wide<W1>) -> Sign {
-    let k2 = Wide::<W2>::mul(k, k);
+fn root_difference_sign(a: &FixedInt<W2>, b: &FixedInt<W2>, k: &FixedInt<W1>) -> Sign {
+    let k2 = FixedInt::<W2>::mul(k, k);
     let m = a.sub(b).sub(&k2);
     match m.sign() {
         Sign::Negative => Sign::Negative,
@@ -79,8 +79,8 @@ fn root_difference_sign(a: &Wide<W2>, b: &Wide<W2>, k: &Wide<W1>) -> Sign {
             }
         }
         Sign::Positive => {
-            let m2 = Wide::<W4>::mul(&m, &m);
-            let k2b = Wide::<W4>::mul(&k2, b);
+            let m2 = FixedInt::<W4>::mul(&m, &m);
+            let k2b = FixedInt::<W4>::mul(&k2, b);
             let four_k2b = k2b.add(&k2b).add(&k2b).add(&k2b);
             m2.sub(&four_k2b).sign()
         }
@@ -101,11 +101,11 @@ fn grain(points: &[DVec3], radii: &[f64]) -> Option<i32> {
 }
 
 /// `|u - v|^2` at grain `lo`, exactly.
-fn squared<const N: usize>(u: DVec3, v: DVec3, lo: i32) -> Wide<N> {
-    let mut s = Wide::<N>::ZERO;
+fn squared<const N: usize>(u: DVec3, v: DVec3, lo: i32) -> FixedInt<N> {
+    let mut s = FixedInt::<N>::ZERO;
     for k in 0..3 {
-        let d = Wide::<W1>::from_f64(u[k], lo).sub(&Wide::<W1>::from_f64(v[k], lo));
-        s = s.add(&Wide::<N>::mul(&d, &d));
+        let d = FixedInt::<W1>::from_f64(u[k], lo).sub(&FixedInt::<W1>::from_f64(v[k], lo));
+        s = s.add(&FixedInt::<N>::mul(&d, &d));
     }
     s
 }

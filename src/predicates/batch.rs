@@ -17,73 +17,11 @@
 //! exact stages.
 
 use super::{orient2d, orient3d};
+use crate::arith::lanes::{BLOCK, Block};
 use crate::point::{IntoDVec2, IntoDVec3};
 use crate::sign::Sign;
-use core::ops::{Add, Mul, Sub};
 #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
 use glam::DVec2;
-
-/// How many cases the filter pass handles at once.
-///
-/// ```
-/// assert!(exactray::predicates::BLOCK >= 4);
-/// ```
-pub const BLOCK: usize = 8;
-
-/// What stage 1 computes with: one `f64` (the scalar predicates) or a
-/// block of them, one per case (the batch variants). Every operation is the
-/// `f64` operation lane by lane, so the error bounds derived for `f64`
-/// hold in every lane.
-pub(super) trait Lanes:
-    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>
-{
-    /// The same value in every lane.
-    fn splat(v: f64) -> Self;
-    /// `|self|` in every lane.
-    fn abs(self) -> Self;
-}
-
-impl Lanes for f64 {
-    #[inline(always)]
-    fn splat(v: f64) -> Self {
-        v
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        f64::abs(self)
-    }
-}
-
-/// One `f64` per case of a block. Operations are element-wise loops that
-/// the compiler turns into vector instructions.
-#[derive(Clone, Copy)]
-pub(super) struct Block([f64; BLOCK]);
-
-impl Lanes for Block {
-    #[inline(always)]
-    fn splat(v: f64) -> Self {
-        Block([v; BLOCK])
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        Block(self.0.map(f64::abs))
-    }
-}
-
-macro_rules! lanewise {
-    ($tr:ident, $f:ident, $op:tt) => {
-        impl $tr for Block {
-            type Output = Block;
-            #[inline(always)]
-            fn $f(self, o: Block) -> Block {
-                Block(core::array::from_fn(|k| self.0[k] $op o.0[k]))
-            }
-        }
-    };
-}
-lanewise!(Add, add, +);
-lanewise!(Sub, sub, -);
-lanewise!(Mul, mul, *);
 
 /// The sign of a certified `f64` determinant, without a branch.
 #[inline(always)]
@@ -314,7 +252,7 @@ fn orient3d_many_in<P: IntoDVec3>(cases: &[[P; 4]], out: &mut [Sign]) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hard_inputs::{InputClass, SplitMix64, orient2d_case, orient3d_case};
+    use crate::testing::{InputClass, SplitMix64, orient2d_case, orient3d_case};
     use glam::{DVec2, DVec3};
 
     /// Every class mixed in one slice, so blocks mix certified and
@@ -339,13 +277,13 @@ mod tests {
                 assert_eq!(orient2d_many(&c2[..len], &mut out), len);
                 assert_eq!(orient2d_many_in(&c2[..len], &mut out_in), len);
                 for (k, [a, b, c]) in c2[..len].iter().enumerate() {
-                    let want = crate::orient2d(*a, *b, *c);
+                    let want = crate::predicates::orient2d(*a, *b, *c);
                     assert_eq!((out[k], out_in[k]), (want, want), "orient2d case {k}");
                 }
                 assert_eq!(orient3d_many(&c3[..len], &mut out), len);
                 assert_eq!(orient3d_many_in(&c3[..len], &mut out_in), len);
                 for (k, [a, b, c, d]) in c3[..len].iter().enumerate() {
-                    let want = crate::orient3d(*a, *b, *c, *d);
+                    let want = crate::predicates::orient3d(*a, *b, *c, *d);
                     assert_eq!((out[k], out_in[k]), (want, want), "orient3d case {k}");
                 }
             }

@@ -7,8 +7,8 @@
 //! bound), small-integer exact (`i64` differences, `u128` squares), big
 //! integer exact (fixed-capacity stack integers).
 
-use super::grain::{Grain, TINY, to_integer_i64};
-use super::wide::Wide;
+use crate::arith::exponent::{Grain, TINY, to_integer_i64};
+use crate::arith::fixed_int::FixedInt;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -102,10 +102,10 @@ pub(crate) fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
 /// squares 4,198 bits and a sum of three 4,200 bits (66 limbs).
 fn big_integer(a: DVec3, b: DVec3, c: DVec3, d: DVec3, lo: i32) -> Sign {
     let sum = |u: DVec3, v: DVec3| {
-        let mut s = Wide::<66>::ZERO;
+        let mut s = FixedInt::<66>::ZERO;
         for k in 0..3 {
-            let diff = Wide::<33>::from_f64(u[k], lo).sub(&Wide::<33>::from_f64(v[k], lo));
-            s = s.add(&Wide::<66>::mul(&diff, &diff));
+            let diff = FixedInt::<33>::from_f64(u[k], lo).sub(&FixedInt::<33>::from_f64(v[k], lo));
+            s = s.add(&FixedInt::<66>::mul(&diff, &diff));
         }
         s
     };

@@ -5,8 +5,8 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
-use super::wide::Wide;
+use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
+use crate::arith::fixed_int::FixedInt;
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -145,19 +145,25 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
 /// differences below `2^2099`, lifts and minors below `2^4199`, the
 /// determinant below `3 * 2^8398 < 2^8400`.
 fn integer<const D: usize, const M: usize, const R: usize>(p: &[DVec2; 4], lo: i32) -> Sign {
-    let int = |v: DVec2| [Wide::<D>::from_f64(v.x, lo), Wide::from_f64(v.y, lo)];
+    let int = |v: DVec2| {
+        [
+            FixedInt::<D>::from_f64(v.x, lo),
+            FixedInt::from_f64(v.y, lo),
+        ]
+    };
     let d = int(p[3]);
     let rel = |v: DVec2| {
         let q = int(v);
         [q[0].sub(&d[0]), q[1].sub(&d[1])]
     };
     let (a, b, c) = (rel(p[0]), rel(p[1]), rel(p[2]));
-    let lift = |u: &[Wide<D>; 2]| Wide::<M>::mul(&u[0], &u[0]).add(&Wide::mul(&u[1], &u[1]));
-    let minor = |u: &[Wide<D>; 2], v: &[Wide<D>; 2]| {
-        Wide::<M>::mul(&u[0], &v[1]).sub(&Wide::mul(&v[0], &u[1]))
+    let lift =
+        |u: &[FixedInt<D>; 2]| FixedInt::<M>::mul(&u[0], &u[0]).add(&FixedInt::mul(&u[1], &u[1]));
+    let minor = |u: &[FixedInt<D>; 2], v: &[FixedInt<D>; 2]| {
+        FixedInt::<M>::mul(&u[0], &v[1]).sub(&FixedInt::mul(&v[0], &u[1]))
     };
-    let det = Wide::<R>::mul(&lift(&a), &minor(&b, &c))
-        .add(&Wide::mul(&lift(&b), &minor(&c, &a)))
-        .add(&Wide::mul(&lift(&c), &minor(&a, &b)));
+    let det = FixedInt::<R>::mul(&lift(&a), &minor(&b, &c))
+        .add(&FixedInt::mul(&lift(&b), &minor(&c, &a)))
+        .add(&FixedInt::mul(&lift(&c), &minor(&a, &b)));
     det.sign()
 }

@@ -6,8 +6,8 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
-use super::wide::Wide;
+use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
+use crate::arith::fixed_int::FixedInt;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -176,30 +176,31 @@ fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
     p: &[DVec3; 5],
     lo: i32,
 ) -> Sign {
-    let int = |v: DVec3| [v.x, v.y, v.z].map(|x| Wide::<D>::from_f64(x, lo));
+    let int = |v: DVec3| [v.x, v.y, v.z].map(|x| FixedInt::<D>::from_f64(x, lo));
     let e = int(p[4]);
     let rel = |v: DVec3| {
         let q = int(v);
         [q[0].sub(&e[0]), q[1].sub(&e[1]), q[2].sub(&e[2])]
     };
     let r = [rel(p[0]), rel(p[1]), rel(p[2]), rel(p[3])];
-    let m2 =
-        |i: usize, j: usize| Wide::<M>::mul(&r[i][0], &r[j][1]).sub(&Wide::mul(&r[j][0], &r[i][1]));
+    let m2 = |i: usize, j: usize| {
+        FixedInt::<M>::mul(&r[i][0], &r[j][1]).sub(&FixedInt::mul(&r[j][0], &r[i][1]))
+    };
     // 3x3 minor of rows i, j, k expanded along z.
     let m3 = |i: usize, j: usize, k: usize| {
-        Wide::<T>::mul(&r[i][2], &m2(j, k))
-            .add(&Wide::mul(&r[j][2], &m2(k, i)))
-            .add(&Wide::mul(&r[k][2], &m2(i, j)))
+        FixedInt::<T>::mul(&r[i][2], &m2(j, k))
+            .add(&FixedInt::mul(&r[j][2], &m2(k, i)))
+            .add(&FixedInt::mul(&r[k][2], &m2(i, j)))
     };
     let lift = |i: usize| {
-        Wide::<M>::mul(&r[i][0], &r[i][0])
-            .add(&Wide::mul(&r[i][1], &r[i][1]))
-            .add(&Wide::mul(&r[i][2], &r[i][2]))
+        FixedInt::<M>::mul(&r[i][0], &r[i][0])
+            .add(&FixedInt::mul(&r[i][1], &r[i][1]))
+            .add(&FixedInt::mul(&r[i][2], &r[i][2]))
     };
     // det[[r_i, lift_i]] expanded along the lift column; we return minus it.
-    let det = Wide::<R>::mul(&lift(1), &m3(0, 2, 3))
-        .add(&Wide::mul(&lift(3), &m3(0, 1, 2)))
-        .sub(&Wide::mul(&lift(0), &m3(1, 2, 3)))
-        .sub(&Wide::mul(&lift(2), &m3(0, 1, 3)));
+    let det = FixedInt::<R>::mul(&lift(1), &m3(0, 2, 3))
+        .add(&FixedInt::mul(&lift(3), &m3(0, 1, 2)))
+        .sub(&FixedInt::mul(&lift(0), &m3(1, 2, 3)))
+        .sub(&FixedInt::mul(&lift(2), &m3(0, 1, 3)));
     -det.sign()
 }

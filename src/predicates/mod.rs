@@ -74,17 +74,13 @@
 pub(crate) mod ball;
 mod batch;
 pub(crate) mod distance;
-mod double_double;
-pub(crate) mod grain;
 mod incircle;
 mod insphere;
 mod orient2d;
-mod orient3d;
+pub(crate) mod orient3d;
 pub(crate) mod orient_dir;
-pub(crate) mod plane_parameter;
-pub mod plane_side;
+mod plane_side;
 mod sparse;
-pub(crate) mod wide;
 
 use crate::error::InputError;
 use crate::point::{IntoDVec2, IntoDVec3};
@@ -94,7 +90,8 @@ use glam::{DVec2, DVec3};
 
 pub(crate) use distance::cmp_lengths;
 
-pub use batch::{BLOCK, orient2d_many, orient3d_many};
+pub use crate::arith::lanes::BLOCK;
+pub use batch::{orient2d_many, orient3d_many};
 pub use plane_side::{SideRelation, same_side, side_of_plane, try_same_side, try_side_of_plane};
 
 /// Checks that every coordinate of every named point is finite.
@@ -126,7 +123,7 @@ pub(crate) fn check_finite3(points: &[(&'static str, DVec3)]) -> Result<(), Inpu
 /// A NaN or infinite coordinate gives `Zero` (see [`try_orient2d`]).
 ///
 /// ```
-/// use exactray::{orient2d, Sign};
+/// use exactray::prelude::*;
 /// use glam::DVec2;
 /// assert_eq!(orient2d(DVec2::ZERO, DVec2::X, DVec2::Y), Sign::Positive);
 /// // Points on the line y = x are exactly collinear, whatever their rounding.
@@ -158,7 +155,7 @@ pub fn try_orient2d(
 /// NaN or infinite coordinate gives `Zero` (see [`try_orient3d`]).
 ///
 /// ```
-/// use exactray::{orient3d, Sign};
+/// use exactray::prelude::*;
 /// use glam::DVec3;
 /// // d above the counterclockwise triangle a, b, c (seen from +z): positive.
 /// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z), Sign::Positive);
@@ -208,7 +205,7 @@ pub fn try_orient3d(
 /// (see [`try_incircle`]).
 ///
 /// ```
-/// use exactray::{incircle, Sign};
+/// use exactray::prelude::*;
 /// let (a, b, c) = ([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]);
 /// assert_eq!(incircle(a, b, c, [0.0, 0.0]), Sign::Positive);
 /// assert_eq!(incircle(a, b, c, [0.0, -1.0]), Sign::Zero);
@@ -257,7 +254,7 @@ pub fn try_incircle(
 /// infinite coordinate gives `Zero` (see [`try_insphere`]).
 ///
 /// ```
-/// use exactray::{insphere, orient3d, Sign};
+/// use exactray::prelude::*;
 /// let (a, b, c, d) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
 /// assert_eq!(orient3d(a, b, c, d), Sign::Positive);
 /// assert_eq!(insphere(a, b, c, d, [0.25, 0.25, 0.25]), Sign::Positive);

@@ -6,10 +6,12 @@
 //! every input the filter declines: it answers almost all near-degenerate,
 //! degenerate and tiny inputs before the cold path.
 
-use super::batch::Lanes;
-use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale};
 use super::sparse;
-use super::wide::Wide;
+use crate::arith::exponent::{
+    Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale,
+};
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::lanes::Lanes;
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -255,18 +257,18 @@ fn small_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
 /// bit `2^-1074`), differences below `2^2099` (34 limbs) and the
 /// determinant below `2^4199` (67 limbs).
 pub(super) fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
-    type D = Wide<34>;
+    type D = FixedInt<34>;
     let dx = |p: DVec2, q: DVec2| D::from_f64(p.x, lox).sub(&D::from_f64(q.x, lox));
     let dy = |p: DVec2, q: DVec2| D::from_f64(p.y, loy).sub(&D::from_f64(q.y, loy));
-    let left = Wide::<67>::mul(&dx(b, a), &dy(c, a));
-    let right = Wide::<67>::mul(&dy(b, a), &dx(c, a));
+    let left = FixedInt::<67>::mul(&dx(b, a), &dy(c, a));
+    let right = FixedInt::<67>::mul(&dy(b, a), &dx(c, a));
     left.sub(&right).sign()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hard_inputs::{InputClass, SplitMix64, orient2d_case, step_ulps};
+    use crate::testing::{InputClass, SplitMix64, orient2d_case, step_ulps};
 
     /// The big-integer stage alone: exact for every finite input.
     fn dense(a: DVec2, b: DVec2, c: DVec2) -> Sign {

@@ -4,10 +4,10 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use super::batch::Lanes;
-use super::grain::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
 use super::sparse;
-use super::wide::Wide;
+use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::lanes::Lanes;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -247,9 +247,9 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
 ) -> Sign {
     let int = |v: DVec3| {
         [
-            Wide::<D>::from_f64(v.x, lo[0]),
-            Wide::from_f64(v.y, lo[1]),
-            Wide::from_f64(v.z, lo[2]),
+            FixedInt::<D>::from_f64(v.x, lo[0]),
+            FixedInt::from_f64(v.y, lo[1]),
+            FixedInt::from_f64(v.z, lo[2]),
         ]
     };
     let a = int(p[0]);
@@ -263,13 +263,13 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
 /// `det[b, c, d]` of integer rows in `D`-limb integers, with `M`-limb
 /// minors and an `R`-limb result; the caller picks the sizes from a bound
 /// on the rows.
-pub(super) fn det3_wide<const D: usize, const M: usize, const R: usize>(
-    [b, c, d]: &[[Wide<D>; 3]; 3],
-) -> Wide<R> {
-    let minor = |u: &[Wide<D>; 3], v: &[Wide<D>; 3]| {
-        Wide::<M>::mul(&u[0], &v[1]).sub(&Wide::<M>::mul(&v[0], &u[1]))
+pub(crate) fn det3_wide<const D: usize, const M: usize, const R: usize>(
+    [b, c, d]: &[[FixedInt<D>; 3]; 3],
+) -> FixedInt<R> {
+    let minor = |u: &[FixedInt<D>; 3], v: &[FixedInt<D>; 3]| {
+        FixedInt::<M>::mul(&u[0], &v[1]).sub(&FixedInt::<M>::mul(&v[0], &u[1]))
     };
-    Wide::<R>::mul(&b[2], &minor(c, d))
-        .add(&Wide::<R>::mul(&c[2], &minor(d, b)))
-        .add(&Wide::<R>::mul(&d[2], &minor(b, c)))
+    FixedInt::<R>::mul(&b[2], &minor(c, d))
+        .add(&FixedInt::<R>::mul(&c[2], &minor(d, b)))
+        .add(&FixedInt::<R>::mul(&d[2], &minor(b, c)))
 }

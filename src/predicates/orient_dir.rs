@@ -4,20 +4,21 @@
 //! (an input vector) and exact differences of input points, decided by the
 //! orient3d ladder on such rows (filter, double-double filter,
 //! small-integer exact, sparse exact terms, big-integer exact). Where the line meets the triangle's plane is
-//! `super::plane_parameter`.
+//! the exact ray–triangle cast's plane parameter (`query::ray::triangle`).
 
-use super::double_double::{SLACK, U, cross_dd, difference, dot_dd, in_range, lanes};
-use super::grain::{Grain, to_integer_i64};
 use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
 use super::sparse;
-use super::wide::Wide;
-use crate::float::{FmaKernel, with_fma};
+use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, lanes};
+use crate::arith::exponent::{Grain, to_integer_i64};
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
+use crate::arith::roundoff::U;
 use crate::sign::Sign;
 use glam::DVec3;
 
 /// Span (per axis) of the small-integer stage, as in orient3d: values
 /// below `2^61`, differences below `2^62`.
-pub(super) const SMALL_SPAN: i32 = 61;
+pub(crate) const SMALL_SPAN: i32 = 61;
 
 /// The exact sign of `det[d, p - o, q - o]`, for finite input (`Zero` for a
 /// NaN or infinite coordinate).
@@ -73,7 +74,7 @@ impl FmaKernel for DoubleDouble {
 /// Each axis's finest bit and the widest span, over the given values per
 /// axis; `None` when some axis is all zero.
 #[inline]
-pub(super) fn grains<const N: usize>(points: &[DVec3; N]) -> Option<([i32; 3], i32)> {
+pub(crate) fn grains<const N: usize>(points: &[DVec3; N]) -> Option<([i32; 3], i32)> {
     let (xs, ys, zs) = (
         points.map(|p| p.x),
         points.map(|p| p.y),
@@ -119,9 +120,9 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
         // `<34, 67, 100>` holds every finite input, as in orient3d.
         let int = |v: DVec3| {
             [
-                Wide::<34>::from_f64(v.x, lo[0]),
-                Wide::from_f64(v.y, lo[1]),
-                Wide::from_f64(v.z, lo[2]),
+                FixedInt::<34>::from_f64(v.x, lo[0]),
+                FixedInt::from_f64(v.y, lo[1]),
+                FixedInt::from_f64(v.z, lo[2]),
             ]
         };
         let oi = int(o);

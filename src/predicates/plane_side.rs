@@ -39,7 +39,7 @@ impl SideRelation {
 /// Exact for every finite input; a NaN or infinite coordinate gives `Zero`.
 ///
 /// ```
-/// use exactray::{side_of_plane, Sign};
+/// use exactray::prelude::*;
 /// let tri = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
 /// assert_eq!(side_of_plane(tri.0, tri.1, tri.2, [5.0, 5.0, 1e-300]), Sign::Positive);
 /// ```
@@ -82,7 +82,7 @@ pub fn try_side_of_plane(
 /// A NaN or infinite coordinate gives `OnPlane` (see [`try_same_side`]).
 ///
 /// ```
-/// use exactray::{same_side, SideRelation};
+/// use exactray::prelude::*;
 /// let (x0, x1, x2) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
 /// assert_eq!(same_side(x0, x1, x2, [0.2, 0.2, 1.0], [9.0, -3.0, 2.0]), SideRelation::Same);
 /// assert_eq!(same_side(x0, x1, x2, [0.2, 0.2, 1.0], [0.0, 0.0, -1e-320]), SideRelation::Opposite);

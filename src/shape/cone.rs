@@ -13,7 +13,8 @@ use glam::DVec3;
 /// ```
 /// use exactray::shape::Cone;
 /// use exactray::query::ray::RayCast;
-/// use exactray::ray::{Interval, Ray};
+/// use exactray::interval::Interval;
+/// use exactray::query::ray::Ray;
 /// let cone = Cone::new([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0).unwrap();
 /// let ray = Ray::new([-2.0, 0.0, 0.5], [1.0, 0.0, 0.0]).unwrap();
 /// assert_eq!(cone.cast(&ray, Interval::FORWARD).unwrap().t, 1.5);

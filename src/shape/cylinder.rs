@@ -11,7 +11,8 @@ use glam::DVec3;
 /// ```
 /// use exactray::shape::Cylinder;
 /// use exactray::query::ray::RayCast;
-/// use exactray::ray::{Interval, Ray};
+/// use exactray::interval::Interval;
+/// use exactray::query::ray::Ray;
 /// let cyl = Cylinder::new([0.0, 0.0, 0.0], [0.0, 1.0, 0.0], 1.0).unwrap();
 /// let ray = Ray::new([-3.0, 5.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
 /// let hit = cyl.cast(&ray, Interval::FORWARD).unwrap();
@@ -50,7 +51,7 @@ impl Cylinder {
             point,
             axis,
             radius,
-            scaled_rr: crate::query::ray::scaled_square(radius, axis),
+            scaled_rr: crate::roots::radial::scaled_square(radius, axis),
             aligned: (0..3).find(|&k| axis[(k + 1) % 3] == 0.0 && axis[(k + 2) % 3] == 0.0),
         })
     }
@@ -80,7 +81,8 @@ impl Cylinder {
 /// ```
 /// use exactray::shape::CappedCylinder;
 /// use exactray::query::ray::RayCast;
-/// use exactray::ray::{Interval, Ray};
+/// use exactray::interval::Interval;
+/// use exactray::query::ray::Ray;
 /// let can = CappedCylinder::new([0.0, 0.0, 0.0], [0.0, 2.0, 0.0], 1.0).unwrap();
 /// // Down the axis: the top disk at y = 2.
 /// let ray = Ray::new([0.0, 5.0, 0.0], [0.0, -1.0, 0.0]).unwrap();

@@ -9,7 +9,7 @@ mod cylinder;
 mod plane;
 mod quadric;
 mod sphere;
-pub mod triangle;
+mod triangle;
 
 pub use cone::Cone;
 pub use cylinder::{CappedCylinder, Cylinder};

@@ -9,7 +9,8 @@ use glam::DVec3;
 /// ```
 /// use exactray::shape::Plane;
 /// use exactray::query::ray::RayCast;
-/// use exactray::ray::{Interval, Ray};
+/// use exactray::interval::Interval;
+/// use exactray::query::ray::Ray;
 /// let floor = Plane::new([0.0, 0.0, 0.0], [0.0, 0.0, 2.0]).unwrap();
 /// let ray = Ray::new([1.0, 1.0, 4.0], [0.0, 0.0, -2.0]).unwrap();
 /// assert_eq!(floor.cast(&ray, Interval::FORWARD).unwrap().t, 2.0);
@@ -37,7 +38,8 @@ impl Plane {
 /// ```
 /// use exactray::shape::Disk;
 /// use exactray::query::ray::RayCast;
-/// use exactray::ray::{Interval, Ray};
+/// use exactray::interval::Interval;
+/// use exactray::query::ray::Ray;
 /// let disk = Disk::new([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0).unwrap();
 /// let down = |x: f64| Ray::new([x, 0.0, 1.0], [0.0, 0.0, -1.0]).unwrap();
 /// assert!(disk.hits(&down(0.5), Interval::FORWARD));

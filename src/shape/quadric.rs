@@ -9,7 +9,8 @@ use glam::DVec3;
 /// ```
 /// use exactray::shape::Quadric;
 /// use exactray::query::ray::RayCast;
-/// use exactray::ray::{Interval, Ray};
+/// use exactray::interval::Interval;
+/// use exactray::query::ray::Ray;
 /// use exactray::roots::Roots;
 /// // The paraboloid z = x^2 + y^2.
 /// let bowl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]).unwrap();

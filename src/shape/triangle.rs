@@ -1,8 +1,8 @@
 //! A triangle in space, given by its three vertices.
 
+use crate::arith::exponent::unit_pow2;
 use crate::error::InputError;
 use crate::point::IntoDVec3;
-use crate::predicates::grain::unit_pow2;
 use crate::predicates::{check_finite3, orient2d};
 use crate::sign::Sign;
 use glam::{DVec2, DVec3};

@@ -5,7 +5,7 @@
 //! Shared by `tests/` and the report via `#[path]`.
 #![allow(dead_code)]
 
-use exactray::hard_inputs::{SplitMix64, step_ulps};
+use exactray::testing::{SplitMix64, step_ulps};
 use glam::DVec3;
 
 /// One ray against one triangle: origin, direction, vertices.

@@ -1,7 +1,8 @@
 //! Ray against [`Cone`].
 
 use super::{Hit, RayCast, unit_or};
-use crate::ray::{Interval, Ray};
+use crate::interval::Interval;
+use crate::query::ray::Ray;
 use crate::roots::{Roots, solve_quadratic};
 use crate::shape::Cone;
 use glam::DVec3;

@@ -1,16 +1,19 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::circle::{Circle, circle_of};
-use super::quadratic::{
-    AllRoots, ETA, FirstIn, Question, SMALL_SPAN, U, exact_roots, in_filter_range, norm1,
-};
 use super::{Hit, RayCast, hit_at, unit_or};
-use crate::float::{FmaKernel, exact_difference, two_prod, two_sum, with_fma};
-use crate::predicates::grain::Grain;
-use crate::predicates::wide::Wide;
-use crate::ray::{Interval, Ray};
+use crate::arith::error_free::{exact_difference, two_prod, two_sum};
+use crate::arith::exponent::Grain;
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
+use crate::arith::roundoff::U;
+use crate::interval::Interval;
+use crate::query::ray::Ray;
 use crate::roots::Roots;
+use crate::roots::certified::{
+    AllRoots, ETA, FirstIn, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
+};
+use crate::roots::radial::{Circle, circle_of};
 use crate::shape::{CappedCylinder, Cylinder};
 use glam::DVec3;
 
@@ -31,7 +34,7 @@ impl Cylinder {
     ///
     /// ```
     /// use exactray::shape::Cylinder;
-    /// use exactray::ray::Ray;
+    /// use exactray::query::ray::Ray;
     /// use exactray::roots::Roots;
     /// // The exam's cylinder x^2 + z^2 = 1 (Q1).
     /// let c = Cylinder::new([0.0, 0.0, 0.0], [0.0, 1.0, 0.0], 1.0).unwrap();
@@ -140,32 +143,6 @@ fn cross_dd(wh: DVec3, wl: DVec3, a: DVec3) -> (DVec3, DVec3, DVec3) {
     (hi, lo, err)
 }
 
-/// `r^2 |a|^2` as a double-double `hi + lo` with a bound on its error: the
-/// squares and the high parts' sums by error-free transformations, the
-/// low-order terms rounding within a few units of their magnitudes.
-pub(crate) fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
-    let (r2h, r2l) = two_prod(r, r);
-    let (q0, l0) = two_prod(a.x, a.x);
-    let (q1, l1) = two_prod(a.y, a.y);
-    let (q2, l2) = two_prod(a.z, a.z);
-    let (s1, f1) = two_sum(q0, q1);
-    let (ah, f2) = two_sum(s1, q2);
-    let al = (l0 + l1 + l2) + (f1 + f2);
-    let e_al = 5.0 * U * (l0.abs() + l1.abs() + l2.abs() + f1.abs() + f2.abs()) + 4.0 * ETA;
-    let (ph, pl) = two_prod(r2h, ah);
-    let (m1, m2) = (r2h * al, r2l * ah);
-    let lo = pl + (m1 + m2);
-    // r^2 = r2h + r2l to within ETA (exact unless r^2 underflows); that
-    // error is scaled by |a|^2, which may be huge.
-    let err = 4.0 * U * (pl.abs() + m1.abs() + m2.abs())
-        + r2h.abs() * e_al
-        + (r2l * al).abs() * (1.0 + 4.0 * U)
-        + r2l.abs() * e_al
-        + ETA * (ah + al.abs() + e_al)
-        + 4.0 * ETA;
-    (ph, lo, err)
-}
-
 /// The exact stage, at three grains (`o, p, r`: `lo`; `d`: `ld`; `a`:
 /// `la`), under which the equation keeps its roots: `A = |v|^2` at
 /// `2 ld + 2 la`, `B = u . v` at `lo + ld + 2 la`, `C = |u|^2 - r^2 |a|^2`
@@ -190,27 +167,27 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
     r: f64,
     (lo, ld, la): (i32, i32, i32),
 ) -> Roots {
-    let w: [Wide<N1>; 3] =
-        core::array::from_fn(|k| Wide::from_f64(o[k], lo).sub(&Wide::from_f64(p[k], lo)));
-    let dw: [Wide<N1>; 3] = core::array::from_fn(|k| Wide::from_f64(d[k], ld));
-    let aw: [Wide<N1>; 3] = core::array::from_fn(|k| Wide::from_f64(ax[k], la));
-    let u: [Wide<N2>; 3] = cross(&w, &aw);
-    let v: [Wide<N2>; 3] = cross(&dw, &aw);
+    let w: [FixedInt<N1>; 3] =
+        core::array::from_fn(|k| FixedInt::from_f64(o[k], lo).sub(&FixedInt::from_f64(p[k], lo)));
+    let dw: [FixedInt<N1>; 3] = core::array::from_fn(|k| FixedInt::from_f64(d[k], ld));
+    let aw: [FixedInt<N1>; 3] = core::array::from_fn(|k| FixedInt::from_f64(ax[k], la));
+    let u: [FixedInt<N2>; 3] = cross(&w, &aw);
+    let v: [FixedInt<N2>; 3] = cross(&dw, &aw);
     let (mut a, mut b, mut c, mut aa) = (
-        Wide::<N4>::ZERO,
-        Wide::<N4>::ZERO,
-        Wide::<N4>::ZERO,
-        Wide::<N2>::ZERO,
+        FixedInt::<N4>::ZERO,
+        FixedInt::<N4>::ZERO,
+        FixedInt::<N4>::ZERO,
+        FixedInt::<N2>::ZERO,
     );
     for k in 0..3 {
-        a = a.add(&Wide::mul(&v[k], &v[k]));
-        b = b.add(&Wide::mul(&u[k], &v[k]));
-        c = c.add(&Wide::mul(&u[k], &u[k]));
-        aa = aa.add(&Wide::mul(&aw[k], &aw[k]));
+        a = a.add(&FixedInt::mul(&v[k], &v[k]));
+        b = b.add(&FixedInt::mul(&u[k], &v[k]));
+        c = c.add(&FixedInt::mul(&u[k], &u[k]));
+        aa = aa.add(&FixedInt::mul(&aw[k], &aw[k]));
     }
-    let rw = Wide::<N1>::from_f64(r, lo);
-    let r2 = Wide::<N2>::mul(&rw, &rw);
-    c = c.sub(&Wide::mul(&r2, &aa));
+    let rw = FixedInt::<N1>::from_f64(r, lo);
+    let r2 = FixedInt::<N2>::mul(&rw, &rw);
+    c = c.sub(&FixedInt::mul(&r2, &aa));
     exact_roots::<N4, N8>(
         (&a, 2 * (ld + la)),
         (&b, lo + ld + 2 * la),
@@ -219,10 +196,13 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
 }
 
 /// `x x y`, exactly.
-fn cross<const N1: usize, const N2: usize>(x: &[Wide<N1>; 3], y: &[Wide<N1>; 3]) -> [Wide<N2>; 3] {
+fn cross<const N1: usize, const N2: usize>(
+    x: &[FixedInt<N1>; 3],
+    y: &[FixedInt<N1>; 3],
+) -> [FixedInt<N2>; 3] {
     core::array::from_fn(|k| {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        Wide::<N2>::mul(&x[i], &y[j]).sub(&Wide::mul(&x[j], &y[i]))
+        FixedInt::<N2>::mul(&x[i], &y[j]).sub(&FixedInt::mul(&x[j], &y[i]))
     })
 }
 impl RayCast for Cylinder {

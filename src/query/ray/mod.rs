@@ -11,12 +11,75 @@
 //! stated error of `f64::MAX` may go either way. `line_roots`, which
 //! reports the whole line, returns such roots as infinities of their sign.
 
-use crate::ray::{Interval, Ray};
+use crate::error::InputError;
+use crate::interval::Interval;
+use crate::point::IntoDVec3;
 use glam::DVec3;
 
-pub mod triangle;
+mod triangle;
 
-pub use triangle::TriangleHit;
+pub use triangle::{EXACT_T_ULPS, TriangleHit};
+
+/// The half-line (or line) `origin + t * direction`. The direction need not
+/// be unit length: queries report `t` in units of it, and their exactness
+/// never depends on normalizing it.
+///
+/// ```
+/// use exactray::query::ray::Ray;
+/// use exactray::InputError;
+/// let ray = Ray::new([0.0, 1.0, 0.0], [2.0, 0.0, 0.0]).unwrap();
+/// assert_eq!(ray.at(0.5).to_array(), [1.0, 1.0, 0.0]);
+/// assert_eq!(Ray::new([0.0; 3], [0.0; 3]).unwrap_err(), InputError::ZeroDirection);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    origin: DVec3,
+    direction: DVec3,
+}
+
+impl Ray {
+    /// A ray from `origin` along `direction` (any [`IntoDVec3`]; `f32`
+    /// widens exactly).
+    ///
+    /// Errors: [`InputError::NonFinite`] naming `"origin"` or `"direction"`
+    /// for a NaN or infinite coordinate; [`InputError::ZeroDirection`] for a
+    /// zero direction. A direction with a tiny non-zero coordinate (even a
+    /// subnormal one) is accepted: every query on it stays defined.
+    pub fn new(origin: impl IntoDVec3, direction: impl IntoDVec3) -> Result<Ray, InputError> {
+        let (origin, direction) = (origin.into_dvec3(), direction.into_dvec3());
+        if !origin.is_finite() {
+            return Err(InputError::NonFinite { argument: "origin" });
+        }
+        if !direction.is_finite() {
+            return Err(InputError::NonFinite {
+                argument: "direction",
+            });
+        }
+        if direction == DVec3::ZERO {
+            return Err(InputError::ZeroDirection);
+        }
+        Ok(Ray { origin, direction })
+    }
+
+    /// The origin.
+    #[inline]
+    pub fn origin(&self) -> DVec3 {
+        self.origin
+    }
+
+    /// The direction, as given.
+    #[inline]
+    pub fn direction(&self) -> DVec3 {
+        self.direction
+    }
+
+    /// The point at parameter `t`, `origin + t * direction`, rounded
+    /// (each coordinate within one rounding of a product and one of a sum).
+    #[inline]
+    pub fn at(&self, t: f64) -> DVec3 {
+        self.origin + self.direction * t
+    }
+}
 
 /// Where a ray meets a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -52,40 +115,11 @@ pub trait RayCast {
     }
 }
 
-mod circle;
 mod cone;
 mod cylinder;
-pub(crate) use cylinder::scaled_square;
 mod plane;
-pub(crate) mod quadratic;
 mod quadric;
 mod sphere;
-
-use crate::roots::Roots;
-
-/// The smallest root that `range` admits ([`Interval::admits`]: a root
-/// beyond `f64`'s range, returned as an infinity, is no hit); for
-/// [`Roots::All`] (the line lies on the surface) the point of `range`
-/// nearest `t = 0`.
-#[inline]
-pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
-    let inside = |t: f64| range.admits(t);
-    match roots {
-        Roots::None => None,
-        Roots::One(t) => inside(t).then_some(t),
-        Roots::Two(t1, t2) => {
-            if inside(t1) {
-                Some(t1)
-            } else {
-                inside(t2).then_some(t2)
-            }
-        }
-        Roots::All => {
-            let t = range.min().max(range.max().min(0.0));
-            t.is_finite().then_some(t)
-        }
-    }
-}
 
 /// The hit at `t` (a cast's first root inside its range), its normal from
 /// the hit point: what the quadrics' casts share.
@@ -113,5 +147,31 @@ pub(crate) fn unit_or(v: DVec3, fallback: DVec3) -> DVec3 {
         fallback.normalize_or_zero()
     } else {
         n
+    }
+}
+
+#[cfg(test)]
+mod ray_tests {
+    use super::*;
+
+    #[test]
+    fn validation() {
+        let nan = f64::NAN;
+        assert_eq!(
+            Ray::new([nan, 0.0, 0.0], [1.0, 0.0, 0.0]),
+            Err(InputError::NonFinite { argument: "origin" })
+        );
+        assert_eq!(
+            Ray::new([0.0; 3], [0.0, f64::INFINITY, 0.0]),
+            Err(InputError::NonFinite {
+                argument: "direction"
+            })
+        );
+        assert_eq!(
+            Ray::new([0.0; 3], [-0.0, 0.0, -0.0]),
+            Err(InputError::ZeroDirection)
+        );
+        let tiny = Ray::new([0.0; 3], [f64::from_bits(1), 0.0, 0.0]).unwrap();
+        assert_eq!(tiny.direction().x, f64::from_bits(1));
     }
 }

@@ -1,7 +1,8 @@
 //! Ray against [`Plane`] and [`Disk`].
 
 use super::{Hit, RayCast};
-use crate::ray::{Interval, Ray};
+use crate::interval::Interval;
+use crate::query::ray::Ray;
 use crate::shape::{Disk, Plane};
 
 impl Plane {

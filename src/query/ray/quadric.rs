@@ -1,15 +1,18 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
-use super::quadratic::{
-    AllRoots, Coeffs, ETA, FirstIn, Polynomial, Question, SMALL_SPAN, U, exact_roots,
-    in_filter_range,
-};
 use super::{Hit, RayCast, hit_at, unit_or};
-use crate::float::{FmaKernel, fma, two_prod, two_sum, with_fma};
-use crate::predicates::grain::Grain;
-use crate::predicates::wide::Wide;
-use crate::ray::{Interval, Ray};
+use crate::arith::error_free::{two_prod, two_sum};
+use crate::arith::exponent::Grain;
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
+use crate::arith::roundoff::U;
+use crate::arith::std_or_libm::fma;
+use crate::interval::Interval;
+use crate::query::ray::Ray;
 use crate::roots::Roots;
+use crate::roots::certified::{
+    AllRoots, Coeffs, ETA, FirstIn, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
+};
 use crate::shape::Quadric;
 use glam::DVec3;
 
@@ -229,23 +232,27 @@ fn exact_in<const N1: usize, const N2: usize, const N3: usize, const N6: usize>(
 ) -> Roots {
     // 2Q from the coefficients, doubled in integers: doubling in f64 would
     // overflow for coefficients near f64::MAX.
-    let [a, b, c, d2, e, f, g, h, i, j] = k.map(|v| Wide::<N1>::from_f64(v, lo));
-    let two = |v: &Wide<N1>| v.add(v);
-    let mw: [[Wide<N1>; 4]; 4] = [
+    let [a, b, c, d2, e, f, g, h, i, j] = k.map(|v| FixedInt::<N1>::from_f64(v, lo));
+    let two = |v: &FixedInt<N1>| v.add(v);
+    let mw: [[FixedInt<N1>; 4]; 4] = [
         [two(&a), d2, e, g],
         [d2, two(&b), f, h],
         [e, f, two(&c), i],
         [g, h, i, two(&j)],
     ];
-    let x: [Wide<N1>; 4] = core::array::from_fn(|i| Wide::from_f64([o.x, o.y, o.z, 1.0][i], lo));
-    let y: [Wide<N1>; 4] = core::array::from_fn(|i| Wide::from_f64([d.x, d.y, d.z, 0.0][i], ld));
-    let times = |v: &[Wide<N1>; 4]| -> [Wide<N2>; 4] {
+    let x: [FixedInt<N1>; 4] =
+        core::array::from_fn(|i| FixedInt::from_f64([o.x, o.y, o.z, 1.0][i], lo));
+    let y: [FixedInt<N1>; 4] =
+        core::array::from_fn(|i| FixedInt::from_f64([d.x, d.y, d.z, 0.0][i], ld));
+    let times = |v: &[FixedInt<N1>; 4]| -> [FixedInt<N2>; 4] {
         core::array::from_fn(|i| {
-            (0..4).fold(Wide::ZERO, |s, j| s.add(&Wide::mul(&mw[i][j], &v[j])))
+            (0..4).fold(FixedInt::ZERO, |s, j| {
+                s.add(&FixedInt::mul(&mw[i][j], &v[j]))
+            })
         })
     };
-    let dot = |u: &[Wide<N1>; 4], v: &[Wide<N2>; 4]| -> Wide<N3> {
-        (0..4).fold(Wide::ZERO, |s, i| s.add(&Wide::mul(&u[i], &v[i])))
+    let dot = |u: &[FixedInt<N1>; 4], v: &[FixedInt<N2>; 4]| -> FixedInt<N3> {
+        (0..4).fold(FixedInt::ZERO, |s, i| s.add(&FixedInt::mul(&u[i], &v[i])))
     };
     let (my, mx) = (times(&y), times(&x));
     let a = dot(&y, &my);

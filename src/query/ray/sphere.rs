@@ -1,14 +1,15 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::circle::circle_of;
-use super::quadratic::{AllRoots, FirstIn, Question, SMALL_SPAN, exact_roots};
 use super::{Hit, RayCast, hit_at, unit_or};
-use crate::float::exact_difference;
-use crate::float::{FmaKernel, with_fma};
-use crate::predicates::grain::Grain;
-use crate::predicates::wide::Wide;
-use crate::ray::{Interval, Ray};
+use crate::arith::error_free::exact_difference;
+use crate::arith::exponent::Grain;
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
+use crate::interval::Interval;
+use crate::query::ray::Ray;
 use crate::roots::Roots;
+use crate::roots::certified::{AllRoots, FirstIn, Question, SMALL_SPAN, exact_roots};
+use crate::roots::radial::circle_of;
 use crate::shape::Sphere;
 use glam::DVec3;
 
@@ -32,7 +33,7 @@ impl Sphere {
     ///
     /// ```
     /// use exactray::shape::Sphere;
-    /// use exactray::ray::Ray;
+    /// use exactray::query::ray::Ray;
     /// use exactray::roots::Roots;
     /// let s = Sphere::new([0.0, 0.0, 0.0], 1.0).unwrap();
     /// let tangent = Ray::new([-5.0, 1.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
@@ -103,16 +104,20 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize>(
     lo: i32,
     ld: i32,
 ) -> Roots {
-    let (mut a, mut b, mut cc) = (Wide::<N2>::ZERO, Wide::<N2>::ZERO, Wide::<N2>::ZERO);
+    let (mut a, mut b, mut cc) = (
+        FixedInt::<N2>::ZERO,
+        FixedInt::<N2>::ZERO,
+        FixedInt::<N2>::ZERO,
+    );
     for k in 0..3 {
-        let w = Wide::<N1>::from_f64(o[k], lo).sub(&Wide::<N1>::from_f64(c[k], lo));
-        let dk = Wide::<N1>::from_f64(d[k], ld);
-        a = a.add(&Wide::mul(&dk, &dk));
-        b = b.add(&Wide::mul(&w, &dk));
-        cc = cc.add(&Wide::mul(&w, &w));
+        let w = FixedInt::<N1>::from_f64(o[k], lo).sub(&FixedInt::<N1>::from_f64(c[k], lo));
+        let dk = FixedInt::<N1>::from_f64(d[k], ld);
+        a = a.add(&FixedInt::mul(&dk, &dk));
+        b = b.add(&FixedInt::mul(&w, &dk));
+        cc = cc.add(&FixedInt::mul(&w, &w));
     }
-    let rw = Wide::<N1>::from_f64(r, lo);
-    cc = cc.sub(&Wide::mul(&rw, &rw));
+    let rw = FixedInt::<N1>::from_f64(r, lo);
+    cc = cc.sub(&FixedInt::mul(&rw, &rw));
     exact_roots::<N2, N4>((&a, 2 * ld), (&b, lo + ld), (&cc, 2 * lo))
 }
 

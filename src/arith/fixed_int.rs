@@ -1,24 +1,24 @@
 //! Fixed-width two's-complement integers on the stack, for the exact stages.
 //!
-//! `Wide<N>` holds `N` little-endian 64-bit limbs. Addition and subtraction
+//! `FixedInt<N>` holds `N` little-endian 64-bit limbs. Addition and subtraction
 //! wrap modulo `2^(64N)`; multiplication skips the zero high limbs of its
 //! operands, so a wide type costs only what the actual values need. Callers
 //! pick `N` from a proven bound on the magnitudes (stated where each
 //! predicate uses it), so wrapping never happens.
 
-use super::grain::split;
-use crate::extended::Extended;
+use super::exponent::split;
+use crate::arith::scaled_float::ScaledFloat;
 use crate::sign::Sign;
 
 /// A signed integer of `N` 64-bit limbs (two's complement, little-endian).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Wide<const N: usize> {
+pub(crate) struct FixedInt<const N: usize> {
     limbs: [u64; N],
 }
 
-impl<const N: usize> Wide<N> {
+impl<const N: usize> FixedInt<N> {
     /// Zero.
-    pub(crate) const ZERO: Self = Wide { limbs: [0; N] };
+    pub(crate) const ZERO: Self = FixedInt { limbs: [0; N] };
 
     /// `m * 2^shift`, for `|m| < 2^63` and `shift + 64 <= 64 * N - 1`.
     #[inline]
@@ -116,9 +116,9 @@ impl<const N: usize> Wide<N> {
     /// The value times `2^lo`, correctly rounded to 53 significant bits,
     /// with an unbounded exponent.
     #[inline]
-    pub(crate) fn as_extended(&self, lo: i32) -> Extended {
+    pub(crate) fn as_extended(&self, lo: i32) -> ScaledFloat {
         let (m, e) = self.rounded_parts();
-        Extended::new(m, e.saturating_add(lo))
+        ScaledFloat::new(m, e.saturating_add(lo))
     }
 
     /// `-self` (wrapping).
@@ -177,7 +177,7 @@ impl<const N: usize> Wide<N> {
     /// `a * b` into `N` limbs, for `|a * b| < 2^(64N - 1)`. Schoolbook
     /// multiplication over the non-zero limbs only.
     #[inline]
-    pub(crate) fn mul<const A: usize, const B: usize>(a: &Wide<A>, b: &Wide<B>) -> Self {
+    pub(crate) fn mul<const A: usize, const B: usize>(a: &FixedInt<A>, b: &FixedInt<B>) -> Self {
         let (ma, la, na) = a.magnitude();
         let (mb, lb, nb) = b.magnitude();
         let mut r = Self::ZERO;
@@ -208,7 +208,7 @@ impl<const N: usize> Wide<N> {
     }
 
     /// `self += x * y` like `mul_schoolbook_add`, multiplying only the
-    /// non-zero limb pairs. Wide operands (the big-integer stages) are
+    /// non-zero limb pairs. FixedInt operands (the big-integer stages) are
     /// mostly sparse: a coordinate difference is one or two 53-bit pieces
     /// at bit positions far apart. Each 128-bit limb product is added in
     /// place and carried as far as the carry goes: the same sum of limb
@@ -252,7 +252,7 @@ impl<const N: usize> Wide<N> {
 mod tests {
     use super::*;
 
-    fn to_i128(w: &Wide<2>) -> i128 {
+    fn to_i128(w: &FixedInt<2>) -> i128 {
         (w.limbs[0] as u128 | (w.limbs[1] as u128) << 64) as i128
     }
 
@@ -270,12 +270,12 @@ mod tests {
         ];
         for &x in &vals {
             for &y in &vals {
-                let (a, b) = (Wide::<2>::from_i64(x), Wide::<2>::from_i64(y));
+                let (a, b) = (FixedInt::<2>::from_i64(x), FixedInt::<2>::from_i64(y));
                 assert_eq!(to_i128(&a.add(&b)), x as i128 + y as i128);
                 assert_eq!(to_i128(&a.sub(&b)), x as i128 - y as i128);
-                assert_eq!(to_i128(&Wide::<2>::mul(&a, &b)), x as i128 * y as i128);
+                assert_eq!(to_i128(&FixedInt::<2>::mul(&a, &b)), x as i128 * y as i128);
                 assert_eq!(
-                    Wide::<2>::mul(&a, &b).sign(),
+                    FixedInt::<2>::mul(&a, &b).sign(),
                     Sign::from_i8((x as i128 * y as i128).signum() as i8)
                 );
             }
@@ -306,8 +306,8 @@ mod tests {
                     _ => 0,
                 };
             }
-            let mut dense = Wide::<30>::ZERO;
-            let mut sparse = Wide::<30>::ZERO;
+            let mut dense = FixedInt::<30>::ZERO;
+            let mut sparse = FixedInt::<30>::ZERO;
             dense.mul_schoolbook_add(&x[..lx], &y[..ly]);
             sparse.mul_sparse_add(&x[..lx], &y[..ly]);
             assert_eq!(dense.limbs, sparse.limbs, "{x:?} {y:?}");
@@ -316,26 +316,26 @@ mod tests {
 
     #[test]
     fn conversion_rounds_correctly() {
-        let w = Wide::<4>::from_i64_shifted(3, 200);
+        let w = FixedInt::<4>::from_i64_shifted(3, 200);
         assert_eq!(w.as_extended(-200).to_f64(), 3.0);
         // 2^53 + 1 rounds to even (2^53); 2^53 + 1 + 2^-100 rounds up.
-        let tie = Wide::<4>::from_i64_shifted((1 << 53) + 1, 100);
+        let tie = FixedInt::<4>::from_i64_shifted((1 << 53) + 1, 100);
         assert_eq!(tie.as_extended(-100).to_f64(), 2f64.powi(53));
-        let above = tie.add(&Wide::<4>::from_i64(1));
+        let above = tie.add(&FixedInt::<4>::from_i64(1));
         assert_eq!(above.as_extended(-100).to_f64(), 2f64.powi(53) + 2.0);
         assert_eq!(
             above.neg().as_extended(-100).to_f64(),
             -(2f64.powi(53) + 2.0)
         );
-        assert!(Wide::<4>::ZERO.as_extended(5).is_zero());
+        assert!(FixedInt::<4>::ZERO.as_extended(5).is_zero());
     }
 
     #[test]
     fn shifted_and_wide_products() {
-        let a = Wide::<4>::from_i64_shifted(-3, 130);
-        let b = Wide::<4>::from_i64_shifted(5, 60);
-        let p = Wide::<4>::mul(&a, &b);
-        let expect = Wide::<4>::from_i64_shifted(-15, 190);
+        let a = FixedInt::<4>::from_i64_shifted(-3, 130);
+        let b = FixedInt::<4>::from_i64_shifted(5, 60);
+        let p = FixedInt::<4>::mul(&a, &b);
+        let expect = FixedInt::<4>::from_i64_shifted(-15, 190);
         assert_eq!(p.sub(&expect).sign(), Sign::Zero);
         assert_eq!(p.sign(), Sign::Negative);
     }

@@ -1,7 +1,7 @@
 //! proptest strategies for hard predicate inputs, for users' property tests.
 //!
 //! The per-family strategies ([`orient2d_inputs`], ...) draw a seed and run
-//! the deterministic generators of [`hard_inputs`](crate::hard_inputs) for an
+//! the deterministic generators of [`testing`](crate::testing) for an
 //! [`InputClass`]; [`finite_f64`] and the `finite_*` point strategies cover
 //! every finite `f64` bit pattern. The thin wrappers ([`degenerate_orient2d`],
 //! [`near_degenerate_incircle`], ...) name the classes most tests want.
@@ -10,9 +10,9 @@
 //! simpler one, so shrinking would only spend time.
 //!
 //! ```
-//! use exactray::hard_inputs::InputClass;
-//! use exactray::strategies::{any_class, finite_dvec2, orient2d_inputs};
-//! use exactray::{orient2d, Sign};
+//! use exactray::testing::InputClass;
+//! use exactray::testing::{any_class, finite_dvec2, orient2d_inputs};
+//! use exactray::prelude::*;
 //! use proptest::prelude::*;
 //!
 //! proptest! {
@@ -38,11 +38,11 @@
 //! # finite_never_panics();
 //! ```
 
-use crate::hard_inputs::{
+use crate::testing::finite_f64_from_bits;
+use crate::testing::{
     InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
     plane_side_case,
 };
-use crate::inputs::finite_f64_from_bits;
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
@@ -80,31 +80,31 @@ pub fn finite_dvec3() -> impl Strategy<Value = DVec3> {
 }
 
 /// `orient2d` arguments `[a, b, c]` of the class (see
-/// [`orient2d_case`](crate::hard_inputs::orient2d_case)).
+/// [`orient2d_case`](crate::testing::orient2d_case)).
 pub fn orient2d_inputs(class: InputClass) -> impl Strategy<Value = [DVec2; 3]> {
     seeded(class, orient2d_case)
 }
 
 /// `orient3d` arguments `[a, b, c, d]` of the class (see
-/// [`orient3d_case`](crate::hard_inputs::orient3d_case)).
+/// [`orient3d_case`](crate::testing::orient3d_case)).
 pub fn orient3d_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 4]> {
     seeded(class, orient3d_case)
 }
 
 /// `incircle` arguments `[a, b, c, d]` of the class (see
-/// [`incircle_case`](crate::hard_inputs::incircle_case)).
+/// [`incircle_case`](crate::testing::incircle_case)).
 pub fn incircle_inputs(class: InputClass) -> impl Strategy<Value = [DVec2; 4]> {
     seeded(class, incircle_case)
 }
 
 /// `insphere` arguments `[a, b, c, d, e]` of the class (see
-/// [`insphere_case`](crate::hard_inputs::insphere_case)).
+/// [`insphere_case`](crate::testing::insphere_case)).
 pub fn insphere_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 5]> {
     seeded(class, insphere_case)
 }
 
 /// `same_side` / `side_of_plane` arguments `[x0, x1, x2, p, q]` of the class
-/// (see [`plane_side_case`](crate::hard_inputs::plane_side_case)).
+/// (see [`plane_side_case`](crate::testing::plane_side_case)).
 pub fn plane_side_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 5]> {
     seeded(class, plane_side_case)
 }

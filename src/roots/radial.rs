@@ -10,8 +10,10 @@
 //! error of `w + t d` is then relative to the point near the surface, not
 //! to `|w|`.
 
-use super::quadratic::{Coeffs, ETA, Polynomial, Question, U, in_filter_range, norm1};
-use crate::float::{fma, two_prod, two_sum};
+use super::certified::{Coeffs, ETA, Polynomial, Question, in_filter_range, norm1};
+use crate::arith::error_free::{two_prod, two_sum};
+use crate::arith::roundoff::U;
+use crate::arith::std_or_libm::fma;
 use glam::DVec3;
 
 /// `|w + t d|^2 = rr`, with `w = wh + wl` to within `ew` (componentwise),
@@ -206,4 +208,30 @@ pub(crate) fn circle_of<Q: Question>(
         err: 0.0,
     }
     .answer(q)
+}
+
+/// `r^2 |a|^2` as a double-double `hi + lo` with a bound on its error: the
+/// squares and the high parts' sums by error-free transformations, the
+/// low-order terms rounding within a few units of their magnitudes.
+pub(crate) fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
+    let (r2h, r2l) = two_prod(r, r);
+    let (q0, l0) = two_prod(a.x, a.x);
+    let (q1, l1) = two_prod(a.y, a.y);
+    let (q2, l2) = two_prod(a.z, a.z);
+    let (s1, f1) = two_sum(q0, q1);
+    let (ah, f2) = two_sum(s1, q2);
+    let al = (l0 + l1 + l2) + (f1 + f2);
+    let e_al = 5.0 * U * (l0.abs() + l1.abs() + l2.abs() + f1.abs() + f2.abs()) + 4.0 * ETA;
+    let (ph, pl) = two_prod(r2h, ah);
+    let (m1, m2) = (r2h * al, r2l * ah);
+    let lo = pl + (m1 + m2);
+    // r^2 = r2h + r2l to within ETA (exact unless r^2 underflows); that
+    // error is scaled by |a|^2, which may be huge.
+    let err = 4.0 * U * (pl.abs() + m1.abs() + m2.abs())
+        + r2h.abs() * e_al
+        + (r2l * al).abs() * (1.0 + 4.0 * U)
+        + r2l.abs() * e_al
+        + ETA * (ah + al.abs() + e_al)
+        + 4.0 * ETA;
+    (ph, lo, err)
 }

@@ -25,10 +25,15 @@
 //! Intersection", Journal of Computer Graphics Techniques 2(1), 2013.
 
 use super::{Hit, RayCast};
-use crate::float::{FmaKernel, larger, largest_magnitude, with_fma};
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
+use crate::arith::magnitude::{larger, largest_magnitude};
+use crate::arith::roundoff::U;
+use crate::interval::Interval;
 use crate::predicates::orient_dir::orient_dir;
-use crate::predicates::plane_parameter::plane_parameter;
-use crate::ray::{Interval, Ray};
+use crate::query::ray::Ray;
+use plane_parameter::plane_parameter;
+
+mod plane_parameter;
 use crate::shape::Triangle;
 use crate::sign::Sign;
 use glam::DVec3;
@@ -52,7 +57,8 @@ impl TriangleHit {
     /// where `ray.at(t)` may lie off its plane by the error of `t`.
     ///
     /// ```
-    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::interval::Interval;
+    /// use exactray::query::ray::Ray;
     /// use exactray::shape::Triangle;
     /// let tri = Triangle::new([0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]).unwrap();
     /// let ray = Ray::new([1.0, 2.0, 5.0], [0.0, 0.0, -1.0]).unwrap();
@@ -67,9 +73,6 @@ impl TriangleHit {
     }
 }
 
-/// `2^-53`, the unit roundoff.
-const U: f64 = f64::EPSILON / 2.0;
-
 /// Orient3d's filter constant `(7 + 56 u) u`, here for `det[d, a_j, e_jk]`
 /// whose rows are the direction and two rounded differences, times the six
 /// products the permanent is bounded by (`6 D M E` for `D` the largest
@@ -82,11 +85,11 @@ const EDGE_BOUND: f64 = 6.0 * (7.0 + 56.0 * U) * U * (1.0 + 1.0 / (1u64 << 40) a
 /// decline: below it no product of three overflows (`2^990`), and the
 /// absolute error of underflowed products (below `2^-1073` per unit of a
 /// coordinate, orient3d's slack terms) stays below [`ABS_SLACK`].
-const FILTER_MAX: f64 = crate::predicates::grain::pow2(330);
+const FILTER_MAX: f64 = crate::arith::exponent::pow2(330);
 
 /// Absolute error bound added to every filter for underflow: orient3d's
 /// slack, `2^-1073 * 3 * 2^330 + 2^-1071`, is below `2^-740`.
-const ABS_SLACK: f64 = crate::predicates::grain::pow2(-700);
+const ABS_SLACK: f64 = crate::arith::exponent::pow2(-700);
 
 /// The exact variant's promise: `|t - t_exact| <= T_ULPS * 2^-53 * |t_exact|`.
 pub const EXACT_T_ULPS: f64 = 4.0;
@@ -105,7 +108,8 @@ impl Triangle {
     /// comparisons and miss.
     ///
     /// ```
-    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::interval::Interval;
+    /// use exactray::query::ray::Ray;
     /// use exactray::shape::Triangle;
     /// let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
     /// let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
@@ -164,7 +168,8 @@ impl Triangle {
     /// where it rounds away from zero. A degenerate triangle is a miss.
     ///
     /// ```
-    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::interval::Interval;
+    /// use exactray::query::ray::Ray;
     /// use exactray::shape::Triangle;
     /// // Two triangles sharing the diagonal of the unit square; a ray
     /// // through a point of the diagonal hits at least one of them.
@@ -218,7 +223,8 @@ impl Triangle {
     /// determinants: exactly zero on the edges the ray meets, in `[0, 1]`.
     ///
     /// ```
-    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::interval::Interval;
+    /// use exactray::query::ray::Ray;
     /// use exactray::shape::Triangle;
     /// let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
     /// // 0.1 + 0.9 rounds to 1, but the doubles 0.1 and 0.9 sum to just
@@ -532,7 +538,8 @@ impl RayCast for Triangle {
     ///
     /// ```
     /// use exactray::query::ray::RayCast;
-    /// use exactray::ray::{Interval, Ray};
+    /// use exactray::interval::Interval;
+    /// use exactray::query::ray::Ray;
     /// use exactray::shape::Triangle;
     /// let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
     /// let ray = Ray::new([0.25, 0.25, -2.0], [0.0, 0.0, 1.0]).unwrap();
@@ -595,7 +602,7 @@ mod tests {
                 ),
             ],
         );
-        let big = crate::predicates::grain::pow2(200);
+        let big = crate::arith::exponent::pow2(200);
         let well_shaped = (
             DVec3::ZERO,
             DVec3::new(b(3), b(5), b(1 << 40)),
@@ -609,7 +616,7 @@ mod tests {
         for (case, (o, d, v)) in [finding, well_shaped].into_iter().enumerate() {
             let mut certified = 0;
             for k in 0..60 {
-                let d = d * crate::predicates::grain::pow2(k);
+                let d = d * crate::arith::exponent::pow2(k);
                 let filter = EdgeFilter::of(o, d, &v);
                 for i in 0..3 {
                     let w = filter.w(d, i);

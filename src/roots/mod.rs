@@ -22,9 +22,13 @@
 //! once each. `tests/roots.rs` checks the bound exactly: the exact
 //! polynomial changes sign within 4 ulps of each returned root.
 
+use crate::arith::exponent::unit_pow2;
+use crate::arith::std_or_libm::{fma, sqrt};
 use crate::error::InputError;
-use crate::float::{fma, sqrt};
-use crate::predicates::grain::unit_pow2;
+use crate::interval::Interval;
+
+pub(crate) mod certified;
+pub(crate) mod radial;
 
 /// The real roots of a quadratic (or lower-degree) polynomial.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -141,4 +145,28 @@ fn discriminant(a: f64, b: f64, c: f64) -> f64 {
     let dp = fma(b, b, -p);
     let dq = fma(4.0 * a, c, -q);
     (p - q) + (dp - dq)
+}
+
+/// The smallest root that `range` admits ([`Interval::admits`]: a root
+/// beyond `f64`'s range, returned as an infinity, is no hit); for
+/// [`Roots::All`] (the line lies on the surface) the point of `range`
+/// nearest `t = 0`.
+#[inline]
+pub(crate) fn first_in(roots: Roots, range: Interval) -> Option<f64> {
+    let inside = |t: f64| range.admits(t);
+    match roots {
+        Roots::None => None,
+        Roots::One(t) => inside(t).then_some(t),
+        Roots::Two(t1, t2) => {
+            if inside(t1) {
+                Some(t1)
+            } else {
+                inside(t2).then_some(t2)
+            }
+        }
+        Roots::All => {
+            let t = range.min().max(range.max().min(0.0));
+            t.is_finite().then_some(t)
+        }
+    }
 }

@@ -8,7 +8,7 @@
 //! produces a NaN or an infinity.
 //!
 //! ```
-//! use exactray::inputs::Orient2dInput;
+//! use exactray::testing::Orient2dInput;
 //! use exactray::Sign;
 //! use glam::DVec2;
 //! let input = Orient2dInput { a: DVec2::ZERO, b: DVec2::X, c: DVec2::Y };
@@ -21,7 +21,7 @@
 //! # #[cfg(feature = "arbitrary")]
 //! # {
 //! use arbitrary::{Arbitrary, Unstructured};
-//! use exactray::inputs::InsphereInput;
+//! use exactray::testing::InsphereInput;
 //! use exactray::Sign;
 //!
 //! let fuzz_bytes = [0x5au8; 120];
@@ -46,7 +46,7 @@ use glam::{DVec2, DVec3};
 /// random `u64` reaches every finite value, including subnormals and `-0.0`.
 ///
 /// ```
-/// use exactray::inputs::finite_f64_from_bits;
+/// use exactray::testing::finite_f64_from_bits;
 /// assert_eq!(finite_f64_from_bits(1.5f64.to_bits()), 1.5);
 /// assert_eq!(finite_f64_from_bits(1).to_bits(), 1); // smallest subnormal
 /// assert_eq!(finite_f64_from_bits(f64::INFINITY.to_bits()), 2f64.powi(1023));
@@ -64,7 +64,7 @@ pub const fn finite_f64_from_bits(bits: u64) -> f64 {
     }
 }
 
-/// Arguments of [`orient2d`](crate::orient2d).
+/// Arguments of [`orient2d`](crate::predicates::orient2d).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Orient2dInput {
     /// First point.
@@ -102,7 +102,7 @@ impl From<[DVec2; 3]> for Orient2dInput {
     }
 }
 
-/// Arguments of [`orient3d`](crate::orient3d).
+/// Arguments of [`orient3d`](crate::predicates::orient3d).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Orient3dInput {
     /// First point.
@@ -142,7 +142,7 @@ impl From<[DVec3; 4]> for Orient3dInput {
     }
 }
 
-/// Arguments of [`incircle`](crate::incircle).
+/// Arguments of [`incircle`](crate::predicates::incircle).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IncircleInput {
     /// First point on the circle.
@@ -182,7 +182,7 @@ impl From<[DVec2; 4]> for IncircleInput {
     }
 }
 
-/// Arguments of [`insphere`](crate::insphere).
+/// Arguments of [`insphere`](crate::predicates::insphere).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct InsphereInput {
     /// First point on the sphere.
@@ -224,7 +224,7 @@ impl From<[DVec3; 5]> for InsphereInput {
     }
 }
 
-/// Arguments of [`same_side`](crate::same_side): a triangle `x0, x1, x2` and
+/// Arguments of [`same_side`](crate::predicates::same_side): a triangle `x0, x1, x2` and
 /// two points `p`, `q`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlaneSideInput {

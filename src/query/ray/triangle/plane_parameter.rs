@@ -10,13 +10,14 @@
 //!
 //! Either way the quotient is within `4 u` (`u = 2^-53`) of the exact `t`.
 
-use super::double_double::{SLACK, U, cross_dd, difference, dot_dd, in_range, lanes};
-use super::grain::{pow2, to_integer_i64};
-use super::orient_dir::{SMALL_SPAN, grains};
-use super::orient3d::det3_wide;
-use super::wide::Wide;
-use crate::float::{FmaKernel, with_fma};
-use crate::ray::Ray;
+use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, lanes};
+use crate::arith::exponent::{pow2, to_integer_i64};
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
+use crate::arith::roundoff::U;
+use crate::predicates::orient_dir::{SMALL_SPAN, grains};
+use crate::predicates::orient3d::det3_wide;
+use crate::query::ray::Ray;
 use glam::DVec3;
 
 /// The parameter `t` where the line `o + t d` of `ray` meets the plane of
@@ -172,13 +173,14 @@ fn quotient<const D: usize, const M: usize, const R: usize>(
 ) -> f64 {
     let int = |p: DVec3| {
         [
-            Wide::<D>::from_f64(p.x, lo[0]),
-            Wide::from_f64(p.y, lo[1]),
-            Wide::from_f64(p.z, lo[2]),
+            FixedInt::<D>::from_f64(p.x, lo[0]),
+            FixedInt::from_f64(p.y, lo[1]),
+            FixedInt::from_f64(p.z, lo[2]),
         ]
     };
-    let sub =
-        |a: &[Wide<D>; 3], b: &[Wide<D>; 3]| [a[0].sub(&b[0]), a[1].sub(&b[1]), a[2].sub(&b[2])];
+    let sub = |a: &[FixedInt<D>; 3], b: &[FixedInt<D>; 3]| {
+        [a[0].sub(&b[0]), a[1].sub(&b[1]), a[2].sub(&b[2])]
+    };
     let (oi, v0) = (int(o), int(v[0]));
     let (e1, e2) = (sub(&int(v[1]), &v0), sub(&int(v[2]), &v0));
     let num = det3_wide::<D, M, R>(&[sub(&v0, &oi), e1, e2]);

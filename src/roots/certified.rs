@@ -18,9 +18,9 @@
 //!   that wants only the first root inside an interval certifies only the
 //!   roots it looks at ([`certified_first`]). The filtered stages run with
 //!   hardware FMA where the CPU has it (`float::with_fma`);
-//! - **exact**: the coefficients as exact integers (`wide.rs`), the
+//! - **exact**: the coefficients as exact integers (`arith::fixed_int`), the
 //!   discriminant's sign exact, each coefficient rounded once to 53 bits
-//!   with an unbounded exponent ([`Extended`]) and the roots from the
+//!   with an unbounded exponent ([`ScaledFloat`]) and the roots from the
 //!   stable formula: four more roundings (sqrt, the sum of same-sign terms,
 //!   the division, and the final conversion), so each root is within
 //!   `4.5u` relative of the exact root to first order (at most 5 ulps).
@@ -28,16 +28,14 @@
 //! Both use the stable pair `t1 = q / A`, `t2 = C / q` with
 //! `q = -(B + sign(B) sqrt(B^2 - A C))`: no cancellation in `q`.
 
-use crate::extended::Extended;
-use crate::float::sqrt;
-use crate::predicates::wide::Wide;
-use crate::ray::Interval;
+use crate::arith::fixed_int::FixedInt;
+use crate::arith::roundoff::U;
+use crate::arith::scaled_float::ScaledFloat;
+use crate::arith::std_or_libm::sqrt;
+use crate::interval::Interval;
 use crate::roots::Roots;
 use crate::sign::Sign;
 use glam::DVec3;
-
-/// The unit roundoff `2^-53`.
-pub(crate) const U: f64 = f64::EPSILON / 2.0;
 
 /// The largest grain span (bits from a set's finest to its coarsest bit)
 /// for which the exact stages use 2-limb inputs: a difference of two such
@@ -315,23 +313,23 @@ fn root_within(k: &Coeffs, t: f64, r: f64, (v, e): (f64, f64)) -> bool {
 /// makes the three terms of the discriminant share one exponent). `M` must
 /// hold `B^2` and `A C`.
 pub(crate) fn exact_roots<const N: usize, const M: usize>(
-    (a, ea): (&Wide<N>, i32),
-    (b, eb): (&Wide<N>, i32),
-    (c, ec): (&Wide<N>, i32),
+    (a, ea): (&FixedInt<N>, i32),
+    (b, eb): (&FixedInt<N>, i32),
+    (c, ec): (&FixedInt<N>, i32),
 ) -> Roots {
     debug_assert_eq!(2 * eb, ea + ec);
     let (xa, xb, xc) = (a.as_extended(ea), b.as_extended(eb), c.as_extended(ec));
     if xa.is_zero() {
         // Linear: 2 B t + C = 0.
         return if !xb.is_zero() {
-            Roots::One(xc.div(xb.mul(Extended::new(-2.0, 0))).to_f64())
+            Roots::One(xc.div(xb.mul(ScaledFloat::new(-2.0, 0))).to_f64())
         } else if xc.is_zero() {
             Roots::All
         } else {
             Roots::None
         };
     }
-    let disc = Wide::<M>::mul(b, b).sub(&Wide::<M>::mul(a, c));
+    let disc = FixedInt::<M>::mul(b, b).sub(&FixedInt::<M>::mul(a, c));
     match disc.sign() {
         Sign::Negative => Roots::None,
         Sign::Zero => Roots::One(xb.neg().div(xa).to_f64()),

@@ -6,11 +6,11 @@
 //! exactly on every platform. Nothing here allocates.
 //!
 //! ```
-//! use exactray::hard_inputs::{orient3d_case, InputClass, SplitMix64};
+//! use exactray::testing::{orient3d_case, InputClass, SplitMix64};
 //! let mut rng = SplitMix64::new(7);
 //! for class in InputClass::ALL {
 //!     let [a, b, c, d] = orient3d_case(class, &mut rng);
-//!     let _ = exactray::orient3d(a, b, c, d);
+//!     let _ = exactray::predicates::orient3d(a, b, c, d);
 //! }
 //! ```
 
@@ -369,7 +369,7 @@ fn pow2(k: i64) -> f64 {
 /// callers that need finite values must avoid.
 ///
 /// ```
-/// use exactray::hard_inputs::step_ulps;
+/// use exactray::testing::step_ulps;
 /// assert_eq!(step_ulps(1.0, 1), 1.0 + f64::EPSILON);
 /// assert_eq!(step_ulps(0.0, -1), -f64::from_bits(1));
 /// ```

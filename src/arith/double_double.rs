@@ -5,21 +5,19 @@
 //! second-order terms rounded, with a bound on the error of the result
 //! relative to the determinant's permanent: `u |value| + 61 u^2 Σ |x_i|
 //! P_i` ([`dot_dd`]). The filtered stages of the ray–triangle tests
-//! (`plane_parameter`, `orient_dir`) use them inside `float::with_fma`'s
+//! (`query::ray::triangle`'s plane parameter, `predicates::orient_dir`) use them inside `fma_dispatch::with_fma`'s
 //! kernel, where each `fma` is one instruction and the lanes are vector
 //! registers.
 
-use super::grain::pow2;
-use crate::float::{exact_difference, fma, two_prod, two_sum};
+use super::error_free::{exact_difference, two_prod, two_sum};
+use super::exponent::pow2;
+use super::std_or_libm::fma;
 use glam::DVec3;
-
-/// `2^-53`, the unit roundoff.
-pub(super) const U: f64 = f64::EPSILON / 2.0;
 
 /// The absolute slack for underflowed products: at most thirty roundings
 /// of `2^-1075`, times a coordinate below `2^300` ([`MAX_MAGNITUDE`]), is
 /// below `2^-760`.
-pub(super) const SLACK: f64 = pow2(-700);
+pub(crate) const SLACK: f64 = pow2(-700);
 
 /// The largest magnitude of a row the bounds hold for: below it, no
 /// product of three coordinates overflows.
@@ -28,17 +26,17 @@ const MAX_MAGNITUDE: f64 = pow2(300);
 /// A vector's `x, y, z` and a zero: four lanes, which the compiler keeps
 /// in one register of the FMA kernel, so that each step below is one
 /// instruction for all three components.
-pub(super) type Lanes = [f64; 4];
+pub(crate) type Lanes = [f64; 4];
 
 #[inline(always)]
-pub(super) fn lanes(v: DVec3) -> Lanes {
+pub(crate) fn lanes(v: DVec3) -> Lanes {
     [v.x, v.y, v.z, 0.0]
 }
 
 /// `a - b` exactly, as a double-double `(hi, lo)` per lane
 /// ([`exact_difference`]).
 #[inline(always)]
-pub(super) fn difference(a: DVec3, b: DVec3) -> (Lanes, Lanes) {
+pub(crate) fn difference(a: DVec3, b: DVec3) -> (Lanes, Lanes) {
     let (hi, lo) = exact_difference(a, b);
     (lanes(hi), lanes(lo))
 }
@@ -46,7 +44,7 @@ pub(super) fn difference(a: DVec3, b: DVec3) -> (Lanes, Lanes) {
 /// Whether every lane of `rows` is at most [`MAX_MAGNITUDE`] in magnitude:
 /// false where a difference overflowed (or for NaN).
 #[inline(always)]
-pub(super) fn in_range(rows: &[Lanes]) -> bool {
+pub(crate) fn in_range(rows: &[Lanes]) -> bool {
     rows.iter()
         .flatten()
         .fold(true, |ok, x| ok & (x.abs() <= MAX_MAGNITUDE))
@@ -54,7 +52,7 @@ pub(super) fn in_range(rows: &[Lanes]) -> bool {
 
 /// `f` on each lane.
 #[inline(always)]
-pub(super) fn each<T>(f: impl Fn(usize) -> T) -> [T; 4] {
+pub(crate) fn each<T>(f: impl Fn(usize) -> T) -> [T; 4] {
     [f(0), f(1), f(2), f(3)]
 }
 
@@ -72,7 +70,7 @@ fn rotated<const K: bool>(v: Lanes) -> Lanes {
 /// The normal `(ah + al) x (bh + bl)` as an unevaluated pair `hi + lo`, for
 /// `|al| <= u |ah|` and `|bl| <= u |bh|` componentwise, with each
 /// component's permanent `P_i = |ah_j bh_k| + |ah_k bh_j|` (rounded).
-pub(super) struct Normal {
+pub(crate) struct Normal {
     pub hi: Lanes,
     pub lo: Lanes,
     pub perm: Lanes,
@@ -85,7 +83,7 @@ pub(super) struct Normal {
 /// P_i`. The dropped `al bl` terms add `u^2 P_i`: so `|hi_i + lo_i - n_i|
 /// <= 25 u^2 P_i` and `|lo_i| <= 4 u P_i`, to first order.
 #[inline(always)]
-pub(super) fn cross_dd((ah, al): (Lanes, Lanes), (bh, bl): (Lanes, Lanes)) -> Normal {
+pub(crate) fn cross_dd((ah, al): (Lanes, Lanes), (bh, bl): (Lanes, Lanes)) -> Normal {
     let (ahj, ahk, alj, alk) = (
         rotated::<false>(ah),
         rotated::<true>(ah),
@@ -125,7 +123,7 @@ pub(super) fn cross_dd((ah, al): (Lanes, Lanes), (bh, bl): (Lanes, Lanes)) -> No
 /// once more. So the result is within `u |value| + 61 u^2 Σ |xh_i| P_i` to
 /// first order.
 #[inline(always)]
-pub(super) fn dot_dd(xh: Lanes, xl: Option<Lanes>, n: &Normal) -> (f64, f64) {
+pub(crate) fn dot_dd(xh: Lanes, xl: Option<Lanes>, n: &Normal) -> (f64, f64) {
     let h = each(|i| two_prod(xh[i], n.hi[i]));
     let lo = each(|i| {
         let lo = fma(xh[i], n.lo[i], h[i].1);
@@ -144,7 +142,8 @@ pub(super) fn dot_dd(xh: Lanes, xl: Option<Lanes>, n: &Normal) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hard_inputs::{SplitMix64, step_ulps};
+    use crate::arith::roundoff::U;
+    use crate::testing::{SplitMix64, step_ulps};
     use num_bigint::BigInt;
 
     /// `v` as `m 2^e` with an integer `m`.

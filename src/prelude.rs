@@ -1,0 +1,25 @@
+//! The crate's vocabulary in one `use`: `use exactray::prelude::*;`.
+//!
+//! Every item here has one other path, its home module; nothing else
+//! re-exports it.
+//!
+//! ```
+//! use exactray::prelude::*;
+//! let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+//! let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
+//! assert_eq!(tri.cast(&ray, Interval::FORWARD).unwrap().t, 1.0);
+//! assert_eq!(orient2d([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]), Sign::Positive);
+//! ```
+
+#[cfg(feature = "alloc")]
+pub use crate::bvh::SphereBvh;
+pub use crate::interval::Interval;
+pub use crate::predicates::{
+    SideRelation, compare_distance, incircle, insphere, orient2d, orient3d, same_side,
+    side_of_plane, try_incircle, try_insphere, try_orient2d, try_orient3d, try_same_side,
+    try_side_of_plane,
+};
+pub use crate::query::ray::{Hit, Ray, RayCast, TriangleHit};
+pub use crate::roots::{Roots, solve_quadratic, try_solve_quadratic};
+pub use crate::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere, Triangle};
+pub use crate::{InputError, IntoDVec2, IntoDVec3, Sign};
