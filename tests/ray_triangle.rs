@@ -480,3 +480,37 @@ fn mixed_subnormal_and_huge_coordinates() {
         check_exact(&(o, d, v), range).unwrap();
     }
 }
+
+/// A fuzzer finding against the tests' own oracle (issue 12's runs): the
+/// exact `t` is `-f64::MAX (1 + 5e-100 u)`, beyond `f64`'s range by far less
+/// than half an ulp, so its correct rounding is `-f64::MAX` and a hit there
+/// is right; the oracle once demanded a miss for every `t` beyond the range.
+#[test]
+fn crossing_just_beyond_the_largest_f64() {
+    let o = DVec3::new(
+        9.124881235244392e192,
+        -1.3804585926447793e-306,
+        9.916182190166406e-309,
+    );
+    let d = DVec3::new(1.0, 2.427115224027714e-285, 1.352488177583646e-257);
+    let v = [
+        DVec3::new(
+            2.6096653751819e-310,
+            -1.9738789546379644e238,
+            1.06236848274838e-309,
+        ),
+        DVec3::new(6.1976e-320, 1.6296927674613e-311, -1.7976931348622648e308),
+        DVec3::new(-f64::MAX, 8.48947806985973e-306, 0.0),
+    ];
+    let (num, den) = exact_crossing(&(o, d, v)).expect("the line crosses the plane");
+    let whole = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+    assert_eq!(
+        oracle::hit_policy(&num, &den, whole.min(), whole.max(), 4),
+        None
+    );
+    check_exact(&(o, d, v), whole).unwrap();
+    let hit = Triangle::new(v[0], v[1], v[2])
+        .unwrap()
+        .cast_exact(&Ray::new(o, d).unwrap(), whole);
+    assert_eq!(hit.map(|h| h.t), Some(-f64::MAX));
+}

@@ -112,16 +112,22 @@ pub struct LineAnswer {
     pub roots: Vec<f64>,
 }
 
+/// How far beyond f64::MAX, in ulps of it, a root still comes out as
+/// +-f64::MAX (see [`Quadratic::answer`]).
+pub const SATURATED_ULPS: i64 = 16;
+
 impl LineAnswer {
     /// What a cast in `[min, max]` whose roots are within `ulps` units of
     /// rounding must return, by the crate's policy (`Interval::admits`: a
     /// hit only at a finite t): `Some(Some(w))` the first root in the range
     /// (correctly rounded), `Some(None)` no hit (no root in the range, or
-    /// only roots beyond f64's range), `None` where either is right (the
-    /// first root in the range lies within `ulps` units of f64::MAX, where
-    /// the cast's rounding may overflow). For a finite root count.
+    /// only roots so far beyond f64's range that they come out infinite),
+    /// `None` where either is right (the first root in the range within
+    /// `2 ulps` units of f64::MAX, or saturated to it, where the cast's
+    /// rounding may or may not overflow). For a finite root count.
     pub fn first_admitted(&self, min: f64, max: f64, ulps: u32) -> Option<Option<f64>> {
-        let band = f64::MAX * (1.0 - f64::from(ulps) * f64::EPSILON);
+        assert!(2 * i64::from(ulps) <= SATURATED_ULPS);
+        let band = f64::MAX * (1.0 - 2.0 * f64::from(ulps) * f64::EPSILON);
         for &w in &self.roots {
             if !(min <= w && w <= max) || w.is_infinite() {
                 continue;
@@ -273,8 +279,9 @@ impl Quadratic {
 
     /// The count and the correctly rounded roots (ties to even), found by
     /// bisection over the doubles on the monotone branch each root lies on.
-    /// A root beyond f64's range (|root| > f64::MAX exactly) comes out as
-    /// an infinity of its sign, as the crate's casts return it.
+    /// A root beyond f64's range comes out as +-f64::MAX within
+    /// [`SATURATED_ULPS`] ulps of it, and as an infinity of its sign (as
+    /// the crate's casts return it) beyond.
     pub fn answer(&self) -> LineAnswer {
         let count = self.count();
         let roots = match count {
@@ -310,17 +317,30 @@ impl Quadratic {
 
     /// The root on a branch where `sign(p(t)) * dir` increases with `t`,
     /// within ordered bounds `[lo, hi]`.
-    /// A branch that reaches +-f64::MAX without its sign change has its
-    /// root beyond f64's range: an infinity.
+    /// A root beyond +-f64::MAX: +-f64::MAX (saturated) within
+    /// [`SATURATED_ULPS`] ulps of it, where a cast's rounded root may still
+    /// be finite; an infinity beyond that, where no root within a few ulps
+    /// is finite.
     fn round_root(&self, dir: i8, lo: i64, hi: i64) -> f64 {
         let lo = lo.max(ordered(-f64::MAX));
         let hi = hi.min(ordered(f64::MAX));
         let f = |t: &Dyadic| dir * self.sign_at(t);
+        // (2^53 - 1 + SATURATED_ULPS) 2^971, exactly.
+        let edge = Dyadic::from_f64(f64::MAX)
+            .add(&Dyadic::from_f64(2f64.powi(971)).mul(&Dyadic::int(SATURATED_ULPS)));
         if hi == ordered(f64::MAX) && f(&Dyadic::from_f64(f64::MAX)) < 0 {
-            return f64::INFINITY;
+            return if f(&edge) < 0 {
+                f64::INFINITY
+            } else {
+                f64::MAX
+            };
         }
         if lo == ordered(-f64::MAX) && f(&Dyadic::from_f64(-f64::MAX)) > 0 {
-            return f64::NEG_INFINITY;
+            return if f(&edge.neg()) > 0 {
+                f64::NEG_INFINITY
+            } else {
+                -f64::MAX
+            };
         }
         self.bisect(f, lo, hi)
     }

@@ -411,23 +411,29 @@ pub fn ratio_in(num: &BigInt, den: &BigInt, min: f64, max: f64) -> bool {
 }
 
 /// The crate's policy for a crossing at the exact parameter `num / den`
-/// (`den > 0`) in `[min, max]`, for a cast whose `t` is within `k` units of
-/// rounding: `Some(true)` where it must be a hit, `Some(false)` where it
-/// must not (outside the range, or beyond `f64`'s range: a cast reports
-/// only finite `t`, `Interval::admits`), `None` where either is right (the
-/// exact `t` within `k` units of `f64::MAX`, where its rounding may
-/// overflow).
+/// in `[min, max]`, for a cast whose `t` is within `k` units of rounding of
+/// the exact one: `Some(true)` where it must be a hit, `Some(false)` where
+/// it must not (outside the range, or so far beyond `f64`'s range that any
+/// `t` within `k` units overflows: a cast reports only finite `t`,
+/// `Interval::admits`), `None` where either is right (the exact `|t|`
+/// within `2k` ulps of `f64::MAX` on either side, where the cast's `t` may
+/// or may not overflow).
 pub fn hit_policy(num: &BigInt, den: &BigInt, min: f64, max: f64, k: u32) -> Option<bool> {
     if !ratio_in(num, den, min, max) {
         return Some(false);
     }
-    let inner = f64::MAX * (1.0 - f64::from(k) * f64::EPSILON);
-    if ratio_in(num, den, -inner, inner) {
+    // f64::MAX is (2^53 - 1) 2^971; `j` ulps of it away, (2^53 - 1 + j) 2^971.
+    let beyond = |j: i64| {
+        let edge = (BigInt::from((1i64 << 53) - 1 + j)) << 971usize;
+        num.abs() > edge * den.abs()
+    };
+    let band = 2 * i64::from(k);
+    if !beyond(-band) {
         Some(true)
-    } else if ratio_in(num, den, -f64::MAX, f64::MAX) {
-        None
-    } else {
+    } else if beyond(band) {
         Some(false)
+    } else {
+        None
     }
 }
 
