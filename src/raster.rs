@@ -35,7 +35,7 @@
 //! pixel, and no allocation: covered pixels are reported one span per row
 //! to a callback, which fills them as it likes.
 
-use crate::arith::roundoff::U;
+use crate::arith::roundoff::{U, gamma};
 use crate::error::InputError;
 use crate::point::IntoDVec2;
 use crate::predicates::{check_finite2, orient2d};
@@ -147,7 +147,7 @@ pub fn rasterize_triangle(
     let far = DVec2::new(x1 as f64 - 0.5, y1 as f64 - 0.5);
     let steps = (x1 - x0) as f64 + (y1 - y0) as f64;
     // Error bound per edge, for every centre of the box: the function at
-    // the first centre is within 4u of its permanent-like magnitude
+    // the first centre is within gamma(4) of its permanent-like magnitude
     // `|d| . |p - a|` (two differences, two products, one difference); each
     // of at most `y1 - y0` row steps adds `u` times a value at most `max`
     // (the largest of `|E|` at the box's corners: E is affine) plus the
@@ -165,7 +165,9 @@ pub fn rasterize_triangle(
         let max = corners.iter().map(|&p| e.at(p).abs()).fold(0.0, f64::max);
         let d = (e.b - e.a).abs();
         let q = (corner - e.a).abs();
-        let direct = 4.0 * U * (d.x * q.y + d.y * q.x);
+        // Two rounded differences, their product and the final difference:
+        // four roundings on each product's path (Higham, Lemma 3.1).
+        let direct = gamma(4) * (d.x * q.y + d.y * q.x);
         let stepping = 4.0 * U * steps * (max + e.step_x.abs() + e.step_y.abs());
         2.0 * (direct + stepping)
     });

@@ -213,10 +213,10 @@ impl Tree {
             let code = library_code(&text);
             let mut to = BTreeSet::new();
             for path in references(&code, module) {
-                if let Some(target) = self.file_of(&path) {
-                    if target != module {
-                        to.insert(target.clone());
-                    }
+                if let Some(target) = self.file_of(&path)
+                    && target != module
+                {
+                    to.insert(target.clone());
                 }
             }
             edges.insert(module.clone(), to);

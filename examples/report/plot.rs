@@ -69,7 +69,11 @@ fn marker(shape: usize, x: f64, y: f64, colour: &str, title: &str) -> String {
             (-1.8, -1.8),
         ]),
     };
-    let tag = if shape % 7 == 0 { "circle" } else { "polygon" };
+    let tag = if shape.is_multiple_of(7) {
+        "circle"
+    } else {
+        "polygon"
+    };
     format!("{open}<title>{title}</title></{tag}>\n")
 }
 

@@ -37,7 +37,12 @@ fn case(o: [f64; 3], d: [f64; 3], k: [f64; 10]) -> Case {
 fn ordinary(rng: &mut SplitMix64) -> Case {
     let mut k = [0.0; 10];
     for v in &mut k[..3] {
-        *v = uniform(rng, 0.3, 2.0) * if rng.next_u64() % 4 == 0 { -1.0 } else { 1.0 };
+        *v = uniform(rng, 0.3, 2.0)
+            * if rng.next_u64().is_multiple_of(4) {
+                -1.0
+            } else {
+                1.0
+            };
     }
     for v in &mut k[3..9] {
         *v = uniform(rng, -0.3, 0.3);

@@ -1,6 +1,10 @@
 //! Runtime FMA dispatch: a kernel compiled a second time with the `fma`
-//! target feature and chosen once the CPU is known. The one `unsafe` call
-//! of the crate is here.
+//! target feature and chosen once the CPU is known.
+
+#![allow(
+    unsafe_code,
+    reason = "calls the FMA-compiled copy after detecting the feature"
+)]
 
 /// A computation to run compiled with hardware FMA where the CPU has it.
 /// `run` must be `#[inline(always)]`, so that its body, and the `fma`

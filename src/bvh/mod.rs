@@ -80,6 +80,7 @@ use crate::arith::exponent::unit_pow2;
 use crate::error::InputError;
 use crate::point::IntoDVec3;
 use alloc::vec::Vec;
+use core::mem::{align_of, size_of};
 use glam::DVec3;
 
 /// Most points a leaf holds. Leaf distances are computed in one vectorized
@@ -204,6 +205,12 @@ pub(crate) struct Spheres {
     pub cz: [f64; 2],
     pub r: [f64; 2],
 }
+
+// The layouts the module docs promise: 16-byte nodes, 64-byte sphere pairs
+// and coordinate blocks, each aligned to its size.
+const _: () = assert!(size_of::<Node>() == 16 && align_of::<Node>() == 16);
+const _: () = assert!(size_of::<Spheres>() == 64 && align_of::<Spheres>() == 64);
+const _: () = assert!(size_of::<Lanes>() == 64 && align_of::<Lanes>() == 64);
 
 /// A bounding-sphere hierarchy over a set of points, answering nearest,
 /// k-nearest and within-radius queries exactly (see the [module

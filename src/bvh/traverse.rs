@@ -275,7 +275,7 @@ fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64
     else {
         return;
     };
-    if start % 8 != 0 {
+    if !start.is_multiple_of(8) {
         // Never: every leaf starts on a block. Correct, if slow, all the same.
         for i in start..start + len.min(LEAF) {
             let d = (tree.point(i) - q) * s;

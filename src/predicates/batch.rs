@@ -16,6 +16,11 @@
 //! sends only the cases the filter could not certify through the scalar
 //! exact stages.
 
+#![allow(
+    unsafe_code,
+    reason = "calls the AVX2 kernels after detecting the feature"
+)]
+
 use super::{orient2d, orient3d};
 use crate::arith::lanes::{BLOCK, Block};
 use crate::point::{IntoDVec2, IntoDVec3};

@@ -6,6 +6,11 @@
 //! every input the filter declines: it answers almost all near-degenerate,
 //! degenerate and tiny inputs before the cold path.
 
+#![allow(
+    unsafe_code,
+    reason = "truncates values proven finite and below 2^62 to i64"
+)]
+
 use super::sparse;
 use crate::arith::exponent::{
     Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale,

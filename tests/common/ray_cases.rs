@@ -178,7 +178,7 @@ impl TiledMesh {
         edges: &[(usize, usize)],
         inner: &[usize],
     ) -> (DVec3, DVec3, Vec<usize>) {
-        let (target, around) = if rng.next_u64() % 4 == 0 {
+        let (target, around) = if rng.next_u64().is_multiple_of(4) {
             let a = inner[(rng.next_u64() % inner.len() as u64) as usize];
             (self.vertices[a], self.around(a, a))
         } else {
