@@ -31,10 +31,9 @@
 //! points under the `rayon` feature), into leaves of 16 to 32 points. A leaf's sphere is centred on its points' bounding box and
 //! encloses them. A parent's sphere encloses every point below it: it is the
 //! smaller of the smallest sphere around its two children's spheres and the
-//! sphere around its own points' bounding-box centre. The second is usually
-//! the smaller: while the tree was developed (leaves of 8 points then),
-//! choosing it cut the nodes a query visits on 10^6 uniform points from 132
-//! to 50 (counted with [`QueryStats`]). Every radius is rounded up with a
+//! sphere around its own points' bounding-box centre; the second is usually
+//! the smaller (the measurements behind this and the other choices here are
+//! in ARCHITECTURE.md, "Design history"). Every radius is rounded up with a
 //! proven margin (`sphere.rs`), so it bounds the exact distances.
 //!
 //! # The walk
@@ -47,8 +46,7 @@
 //! over all `LEAF` (32) lanes; the nearest-point query rejects a leaf whose
 //! least distance is certainly beyond the best, and otherwise only looks at
 //! the lanes near that least distance. At 10^6 uniform points a query visits
-//! 21.6 nodes and computes 71 distances (the report's `nearest` notes;
-//! before the box bound: 40 and 94).
+//! 21.6 nodes and computes 71 distances (the report's `nearest` notes).
 //!
 //! The nodes are laid out for memory, which bounds query time at 10^6
 //! points more than instructions do: 16 bytes each (split, second child,
@@ -84,10 +82,8 @@ use core::mem::{align_of, size_of};
 use glam::DVec3;
 
 /// Most points a leaf holds. Leaf distances are computed in one vectorized
-/// pass, so bigger leaves cost little; 32 visited the fewest nodes for the
-/// time (8 and 16 were slower on 10^4 and 10^6 uniform points). With the
-/// current walk, 16 again took more time at 10^6 points (twice the nodes to
-/// fetch), and 64 took 35% more instructions for no time gained.
+/// pass, so bigger leaves cost little; 32 measured fastest against 8, 16
+/// and 64 (ARCHITECTURE.md, "Design history").
 pub(crate) const LEAF: usize = 32;
 
 /// Points in the first child of a subtree of `count > LEAF` points: half,
