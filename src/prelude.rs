@@ -21,5 +21,7 @@ pub use crate::predicates::{
 };
 pub use crate::query::ray::{Hit, Ray, RayCast, TriangleHit};
 pub use crate::roots::{Roots, solve_quadratic, try_solve_quadratic};
-pub use crate::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere, Triangle};
+pub use crate::shape::{
+    Aabb, Bounded, CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere, Triangle,
+};
 pub use crate::{InputError, IntoDVec2, IntoDVec3, Sign};
