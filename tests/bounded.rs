@@ -48,7 +48,11 @@ fn coordinate(rng: &mut SplitMix64) -> f64 {
     let m = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 + 0.5;
     let e = (rng.next_u64() % 2000) as i32 - 1000;
     let v = m * 2f64.powi(e.clamp(-1022, 1000));
-    if rng.next_u64() % 2 == 0 { v } else { -v }
+    if rng.next_u64().is_multiple_of(2) {
+        v
+    } else {
+        -v
+    }
 }
 
 #[test]
@@ -66,7 +70,7 @@ fn boxes_hold_their_exact_shapes() {
         let (p, mut a) = (v(), v());
         // Every fourth case cancels: the axis undoes the base point but
         // for a tiny remainder.
-        if case % 4 == 0 {
+        if case.is_multiple_of(4) {
             a = -p + DVec3::splat(r);
         }
         let sphere = Sphere::new(p, r).unwrap().aabb().unwrap();
