@@ -58,7 +58,7 @@ fn coordinate(rng: &mut SplitMix64) -> f64 {
 #[test]
 fn boxes_hold_their_exact_shapes() {
     let mut rng = SplitMix64::new(0xb0c5);
-    for case in 0..20_000 {
+    for case in 0..20_000u32 {
         let r = coordinate(&mut rng).abs();
         let mut v = || {
             DVec3::new(
