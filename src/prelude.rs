@@ -19,7 +19,7 @@ pub use crate::predicates::{
     side_of_plane, try_incircle, try_insphere, try_orient2d, try_orient3d, try_same_side,
     try_side_of_plane,
 };
-pub use crate::query::ray::{Hit, Ray, RayCast, TriangleHit};
+pub use crate::query::ray::{Hit, LineRoots, Ray, RayCast, TriangleHit};
 pub use crate::roots::{Roots, solve_quadratic, try_solve_quadratic};
 pub use crate::shape::{
     Aabb, Bounded, CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere, Triangle,

@@ -14,6 +14,7 @@
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
+use crate::roots::Roots;
 use glam::DVec3;
 
 mod triangle;
@@ -114,6 +115,42 @@ pub trait RayCast {
         self.cast_t(ray, range).is_some()
     }
 }
+
+/// The real roots of the whole line `origin + t * direction` (every `t`,
+/// not only a cast's interval) against a quadric surface: what a user
+/// needs to clip, count or classify crossings in generic code. Each shape's
+/// inherent `line_roots` says its accuracy; this trait calls it.
+///
+/// ```
+/// use exactray::prelude::*;
+/// fn crossings(shape: &impl LineRoots, ray: &Ray) -> Option<usize> {
+///     shape.line_roots(ray).count()
+/// }
+/// let ray = Ray::new([0.0, 0.0, -3.0], [0.0, 0.0, 1.0]).unwrap();
+/// assert_eq!(crossings(&Sphere::new([0.0; 3], 1.0).unwrap(), &ray), Some(2));
+/// ```
+pub trait LineRoots {
+    /// Every real root of the shape's equation along the ray's line,
+    /// sorted ([`Roots`]).
+    fn line_roots(&self, ray: &Ray) -> Roots;
+}
+
+macro_rules! line_roots_by_inherent {
+    ($($shape:ty),*) => {$(
+        impl LineRoots for $shape {
+            #[inline]
+            fn line_roots(&self, ray: &Ray) -> Roots {
+                <$shape>::line_roots(self, ray)
+            }
+        }
+    )*};
+}
+line_roots_by_inherent!(
+    crate::shape::Sphere,
+    crate::shape::Cylinder,
+    crate::shape::Quadric,
+    crate::shape::Cone
+);
 
 mod cone;
 mod cylinder;
