@@ -119,8 +119,11 @@ pub(crate) fn check_finite3(points: &[(&'static str, DVec3)]) -> Result<(), Inpu
 /// Exact orientation of three 2D points: the sign of `(b - a) x (c - a)`.
 ///
 /// `Positive` when `a, b, c` turn counterclockwise, `Negative` when
-/// clockwise, `Zero` when they are collinear. Exact for every finite input.
-/// A NaN or infinite coordinate gives `Zero` (see [`try_orient2d`]).
+/// clockwise, `Zero` when they are collinear.
+///
+/// # Accuracy
+/// Exact for every finite input. A NaN or infinite coordinate gives `Zero`
+/// (see [`try_orient2d`]).
 ///
 /// ```
 /// use exactray::prelude::*;
@@ -135,8 +138,10 @@ pub fn orient2d(a: impl IntoDVec2, b: impl IntoDVec2, c: impl IntoDVec2) -> Sign
     orient2d::orient2d(a.into_dvec2(), b.into_dvec2(), c.into_dvec2())
 }
 
-/// [`orient2d`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`orient2d`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_orient2d(
     a: impl IntoDVec2,
@@ -176,8 +181,10 @@ pub fn orient3d(
     )
 }
 
-/// [`orient3d`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`orient3d`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_orient3d(
     a: impl IntoDVec3,
@@ -226,8 +233,10 @@ pub fn incircle(
     )
 }
 
-/// [`incircle`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`incircle`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_incircle(
     a: impl IntoDVec2,
@@ -278,8 +287,10 @@ pub fn insphere(
     )
 }
 
-/// [`insphere`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`insphere`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_insphere(
     a: impl IntoDVec3,
@@ -323,8 +334,10 @@ pub fn compare_distance(q: impl IntoDVec3, p: impl IntoDVec3, r: impl IntoDVec3)
         .cmp(&0)
 }
 
-/// [`compare_distance`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`compare_distance`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_compare_distance(
     q: impl IntoDVec3,

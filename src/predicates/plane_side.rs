@@ -58,8 +58,10 @@ pub fn side_of_plane(
     )
 }
 
-/// [`side_of_plane`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`side_of_plane`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_side_of_plane(
     x0: impl IntoDVec3,
@@ -108,8 +110,10 @@ pub fn same_side(
     }
 }
 
-/// [`same_side`] that rejects a NaN or infinite coordinate with
-/// [`InputError::NonFinite`] naming the argument.
+/// [`same_side`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coordinate, naming the first such argument.
 #[inline]
 pub fn try_same_side(
     x0: impl IntoDVec3,

@@ -117,8 +117,10 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> Roots {
     }
 }
 
-/// [`solve_quadratic`] that rejects a NaN or infinite coefficient with
-/// [`InputError::NonFinite`] naming it (`"a"`, `"b"` or `"c"`).
+/// [`solve_quadratic`], checked: the same answer for finite input.
+///
+/// # Errors
+/// [`InputError::NonFinite`] for a NaN or infinite coefficient, naming it (`"a"`, `"b"` or `"c"`).
 pub fn try_solve_quadratic(a: f64, b: f64, c: f64) -> Result<Roots, InputError> {
     for (argument, v) in [("a", a), ("b", b), ("c", c)] {
         if !v.is_finite() {

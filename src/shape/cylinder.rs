@@ -33,7 +33,10 @@ pub struct Cylinder {
 }
 
 impl Cylinder {
-    /// An infinite cylinder. Errors: [`InputError::NonFinite`] (`"point"`,
+    /// An infinite cylinder.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] (`"point"`,
     /// `"axis"`, `"radius"`), [`InputError::Degenerate`] for a zero axis,
     /// [`InputError::InvalidRadius`] for a negative or NaN radius. Radius
     /// zero is the axis line itself.

@@ -22,7 +22,10 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// A plane. Errors: [`InputError::NonFinite`] (`"point"`, `"normal"`),
+    /// A plane.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] (`"point"`, `"normal"`),
     /// [`InputError::Degenerate`] for a zero normal.
     pub fn new(point: impl IntoDVec3, normal: impl IntoDVec3) -> Result<Plane, InputError> {
         Ok(Plane {
@@ -52,7 +55,10 @@ pub struct Disk {
 }
 
 impl Disk {
-    /// A disk. Errors: as for [`Plane::new`] (`"center"` for the first
+    /// A disk.
+    ///
+    /// # Errors
+    /// as for [`Plane::new`] (`"center"` for the first
     /// argument), and [`InputError::InvalidRadius`] for a negative or NaN
     /// radius.
     pub fn new(

@@ -19,7 +19,10 @@ pub struct Sphere {
 }
 
 impl Sphere {
-    /// A sphere. Errors: [`InputError::NonFinite`] (`"center"`, or
+    /// A sphere.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] (`"center"`, or
     /// `"radius"` when infinite), [`InputError::InvalidRadius`] for a
     /// negative or NaN radius. Radius zero is a point, which only tangent
     /// rays (those through it) meet.

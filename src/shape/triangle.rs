@@ -34,7 +34,10 @@ pub struct Triangle {
 impl Triangle {
     /// The triangle `v0, v1, v2` (any [`IntoDVec3`]; `f32` widens exactly).
     ///
-    /// Errors: [`InputError::NonFinite`] naming `"v0"`, `"v1"` or `"v2"`
+    ///
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] naming `"v0"`, `"v1"` or `"v2"`
     /// for a NaN or infinite coordinate.
     pub fn new(
         v0: impl IntoDVec3,
