@@ -10,6 +10,43 @@ use super::exponent::split;
 use crate::arith::scaled_float::ScaledFloat;
 use crate::sign::Sign;
 
+/// Magnitude bits of an input coordinate, or of a difference of two, as an
+/// integer at the finest grain of its axis: finite `f64` values lie below
+/// `2^1024` and are multiples of `2^-1074`, so a coordinate is below
+/// `2^2098` in those units and a difference below `2^2099`; `2100` keeps
+/// one bit to spare (a doubled input, as the quadric's, fits too).
+pub(crate) const COORD_BITS: u32 = 2100;
+
+/// Bits for the number of terms summed in a value: every determinant and
+/// polynomial of the crate sums fewer than `2^10` products.
+const TERM_BITS: u32 = 10;
+
+/// Limbs of a [`FixedInt`] holding every signed value below `2^bits` in
+/// magnitude: the bits and a sign bit in whole limbs, and one limb to
+/// spare.
+pub(crate) const fn limbs_for(bits: u32) -> usize {
+    ((bits + 1).div_ceil(64) + 1) as usize
+}
+
+/// Limbs for a sum of products of `degree` coordinates or differences.
+pub(crate) const fn limbs_of_degree(degree: u32) -> usize {
+    limbs_for(degree * COORD_BITS + TERM_BITS)
+}
+
+/// [`limbs_of_degree`] for the degrees the exact stages use.
+pub(crate) const DEG1: usize = limbs_of_degree(1);
+/// Degree 2: products of two differences, squared lengths, 2x2 minors.
+pub(crate) const DEG2: usize = limbs_of_degree(2);
+/// Degree 3: orient3d's determinant.
+pub(crate) const DEG3: usize = limbs_of_degree(3);
+/// Degree 4: in-circle's lifted determinant, squared degree-2 values.
+pub(crate) const DEG4: usize = limbs_of_degree(4);
+/// Degree 5: in-sphere's lifted determinant.
+pub(crate) const DEG5: usize = limbs_of_degree(5);
+
+// The widths the exact stages were written and fuzzed with.
+const _: () = assert!(DEG1 == 34 && DEG2 == 67 && DEG3 == 100 && DEG4 == 133 && DEG5 == 166);
+
 /// A signed integer of `N` 64-bit limbs (two's complement, little-endian).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FixedInt<const N: usize> {

@@ -9,18 +9,18 @@
 
 use super::distance::cmp_lengths;
 use crate::arith::exponent::Grain;
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::sign::Sign;
 use glam::DVec3;
 
 /// Limbs for a value of the inputs or a difference or sum of two: below
 /// `2^2100` at the common grain (span at most 2,098 bits, see `distance.rs`).
-const W1: usize = 34;
+const W1: usize = DEG1;
 /// Limbs for a degree-2 value (`|c - q|^2`, `k^2`) and sums of three:
 /// below `2^4204`.
-const W2: usize = 67;
+const W2: usize = DEG2;
 /// Limbs for a degree-4 value (`m^2`, `4 k^2 b`): below `2^8410`.
-const W4: usize = 133;
+const W4: usize = DEG4;
 
 /// The sign of `|c - q| - (r1 + r2)`, exactly (`r1, r2 >= 0`).
 pub(crate) fn cmp_length_to_sum(q: DVec3, c: DVec3, r1: f64, r2: f64) -> Sign {

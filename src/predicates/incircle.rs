@@ -6,7 +6,7 @@
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
 use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -136,7 +136,7 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    integer::<34, 67, 133>(&points, grain.lo_min)
+    integer::<DEG1, DEG2, DEG4>(&points, grain.lo_min)
 }
 
 /// Stages 2 and 5: coordinates as integers at the finest bit `lo`, with

@@ -7,7 +7,7 @@
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
 use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -163,7 +163,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Si
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    integer::<34, 67, 100, 166>(&points, grain.lo_min)
+    integer::<DEG1, DEG2, DEG3, DEG5>(&points, grain.lo_min)
 }
 
 /// Stages 2 and 5: coordinates as integers at the finest bit `lo`, with

@@ -15,7 +15,7 @@ use super::sparse;
 use crate::arith::exponent::{
     Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale,
 };
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::lanes::Lanes;
 use crate::sign::Sign;
 use glam::DVec2;
@@ -262,11 +262,11 @@ fn small_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
 /// bit `2^-1074`), differences below `2^2099` (34 limbs) and the
 /// determinant below `2^4199` (67 limbs).
 pub(super) fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
-    type D = FixedInt<34>;
+    type D = FixedInt<DEG1>;
     let dx = |p: DVec2, q: DVec2| D::from_f64(p.x, lox).sub(&D::from_f64(q.x, lox));
     let dy = |p: DVec2, q: DVec2| D::from_f64(p.y, loy).sub(&D::from_f64(q.y, loy));
-    let left = FixedInt::<67>::mul(&dx(b, a), &dy(c, a));
-    let right = FixedInt::<67>::mul(&dy(b, a), &dx(c, a));
+    let left = FixedInt::<DEG2>::mul(&dx(b, a), &dy(c, a));
+    let right = FixedInt::<DEG2>::mul(&dy(b, a), &dx(c, a));
     left.sub(&right).sign()
 }
 

@@ -6,7 +6,7 @@
 
 use super::sparse;
 use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
 use crate::sign::Sign;
 use glam::DVec3;
@@ -185,7 +185,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<34, 67, 100>(&points, lo))
+    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(&points, lo))
 }
 
 /// Stage 2: each axis as integers at its finest bit, in native integers

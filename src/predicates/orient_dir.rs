@@ -10,7 +10,7 @@ use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
 use super::sparse;
 use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, lanes};
 use crate::arith::exponent::{Grain, to_integer_i64};
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
 use crate::sign::Sign;
@@ -120,7 +120,7 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
         // `<34, 67, 100>` holds every finite input, as in orient3d.
         let int = |v: DVec3| {
             [
-                FixedInt::<34>::from_f64(v.x, lo[0]),
+                FixedInt::<DEG1>::from_f64(v.x, lo[0]),
                 FixedInt::from_f64(v.y, lo[1]),
                 FixedInt::from_f64(v.z, lo[2]),
             ]
@@ -130,6 +130,6 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
             let v = int(v);
             [v[0].sub(&oi[0]), v[1].sub(&oi[1]), v[2].sub(&oi[2])]
         };
-        det3_wide::<34, 67, 100>(&[int(d), rel(p), rel(q)]).sign()
+        det3_wide::<DEG1, DEG2, DEG3>(&[int(d), rel(p), rel(q)]).sign()
     })
 }

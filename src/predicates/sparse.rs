@@ -70,6 +70,7 @@ mod tests {
     use super::super::{orient2d as o2, orient3d as o3};
     use super::*;
     use crate::arith::exponent::{Grain, pow2};
+    use crate::arith::fixed_int::{DEG1, DEG2, DEG3};
     use crate::testing::{InputClass, SplitMix64, orient2d_case, orient3d_case};
 
     /// A coordinate built to cancel: a few shared anchors at scattered
@@ -110,7 +111,7 @@ mod tests {
         if g.iter().any(|g| g.all_zero()) {
             return Sign::Zero;
         }
-        o3::integer::<34, 67, 100>(&p, g.map(|g| g.lo_min))
+        o3::integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
     }
 
     #[test]

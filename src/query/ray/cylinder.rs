@@ -4,7 +4,7 @@
 use super::{Hit, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{exact_difference, two_prod, two_sum};
 use crate::arith::exponent::Grain;
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
 use crate::interval::Interval;
@@ -19,10 +19,11 @@ use glam::DVec3;
 
 /// Limbs at the common grains: an input or a difference of two (below
 /// `2^2100`), then degrees 2, 4 and 8.
-const W1: usize = 34;
-const W2: usize = 67;
-const W4: usize = 133;
-const W8: usize = 266;
+const W1: usize = DEG1;
+const W2: usize = DEG2;
+const W4: usize = DEG4;
+/// A product of two degree-4 values takes the limbs of both.
+const W8: usize = 2 * W4;
 
 impl Cylinder {
     /// Every real root of `|(o + t d - point) x axis|^2 = radius^2 |axis|^2`

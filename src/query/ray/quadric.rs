@@ -3,7 +3,7 @@
 use super::{Hit, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{two_prod, two_sum};
 use crate::arith::exponent::Grain;
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
 use crate::arith::std_or_libm::fma;
@@ -18,10 +18,12 @@ use glam::DVec3;
 
 /// Limbs at the common grains: an input (below `2^2100`, doubled), then
 /// degrees 2, 3 and 6.
-const W1: usize = 34;
-const W2: usize = 67;
-const W3: usize = 101;
-const W6: usize = 202;
+const W1: usize = DEG1;
+const W2: usize = DEG2;
+/// A product of a degree-1 and a degree-2 value takes the limbs of both.
+const W3: usize = W1 + W2;
+/// A product of two degree-3 values takes the limbs of both.
+const W6: usize = 2 * W3;
 
 impl Quadric {
     /// Every real root in `t` of the quadric's equation at `o + t d`, over

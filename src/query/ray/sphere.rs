@@ -3,7 +3,7 @@
 use super::{Hit, RayCast, hit_at, unit_or};
 use crate::arith::error_free::exact_difference;
 use crate::arith::exponent::Grain;
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
@@ -15,9 +15,9 @@ use glam::DVec3;
 
 /// Limbs for an input coordinate or a difference of two at a common grain
 /// (below `2^2100`, as in `predicates/ball.rs`), and for degree 2 and 4.
-const W1: usize = 34;
-const W2: usize = 67;
-const W4: usize = 133;
+const W1: usize = DEG1;
+const W2: usize = DEG2;
+const W4: usize = DEG4;
 
 impl Sphere {
     /// Every real root of `|o + t d - center|^2 = radius^2` over the whole

@@ -12,7 +12,7 @@
 
 use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, lanes};
 use crate::arith::exponent::{pow2, to_integer_i64};
-use crate::arith::fixed_int::FixedInt;
+use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
 use crate::predicates::orient_dir::{SMALL_SPAN, grains};
@@ -102,7 +102,7 @@ fn exact_parameter(o: DVec3, d: DVec3, v0: DVec3, v1: DVec3, v2: DVec3) -> f64 {
         quotient::<8, 16, 24>(o, d, v, lo)
     } else {
         // Every finite input, as in orient3d's last stage.
-        quotient::<34, 67, 100>(o, d, v, lo)
+        quotient::<DEG1, DEG2, DEG3>(o, d, v, lo)
     }
 }
 
