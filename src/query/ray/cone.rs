@@ -1,6 +1,8 @@
 //! Ray against [`Cone`].
 
+use super::point_error::{dot_error, quotient_t_error};
 use super::{Hit, RayCast, unit_or};
+use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
 use crate::roots::{Roots, solve_quadratic};
@@ -61,21 +63,30 @@ impl RayCast for Cone {
         };
         let dh = ray.direction().dot(a);
         let base = (self.capped && dh != 0.0)
-            .then(|| (s - (ray.origin() - self.apex).dot(a)) / dh)
-            .filter(|&t| {
+            .then(|| s - (ray.origin() - self.apex).dot(a))
+            .map(|num| (num / dh, num))
+            .filter(|&(t, _)| {
                 let radial = (ray.at(t) - self.apex).cross(a);
                 range.admits(t) && radial.dot(radial) <= self.radius * self.radius * s
             });
-        let (t, normal) = match (lateral, base) {
-            (Some(tl), Some(tb)) if tb < tl => (tb, a.normalize()),
-            (Some(tl), _) => (tl, self.normal_at(ray.at(tl), -ray.direction())),
-            (None, Some(tb)) => (tb, a.normalize()),
+        // The base plane's level |a|^2 is `s` within gamma(4) of it, the
+        // origin's height within its dot product's bound, and `num` rounds
+        // once more. The lateral roots carry no certified bound yet.
+        let base_error = |t: f64, num: f64| {
+            let e_h = dot_error(ray.origin() - self.apex, a);
+            let e_num = e_h + gamma(4) * s + U * num.abs() * (1.0 + 2.0 * U);
+            quotient_t_error(t, e_num, dh, dot_error(ray.direction(), a))
+        };
+        let (t, et, normal) = match (lateral, base) {
+            (Some(tl), Some((tb, num))) if tb < tl => (tb, base_error(tb, num), a.normalize()),
+            (Some(tl), _) => (
+                tl,
+                f64::INFINITY,
+                self.normal_at(ray.at(tl), -ray.direction()),
+            ),
+            (None, Some((tb, num))) => (tb, base_error(tb, num), a.normalize()),
             (None, None) => return None,
         };
-        Some(Hit {
-            t,
-            point: ray.at(t),
-            normal,
-        })
+        Some(Hit::at(ray, t, et, normal))
     }
 }

@@ -1,12 +1,13 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
+use super::point_error::{dot_error, quotient_t_error, root_t_error};
 use super::{Hit, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{exact_difference, two_prod, two_sum};
 use crate::arith::exponent::Grain;
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
-use crate::arith::roundoff::U;
+use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
 use crate::roots::Roots;
@@ -235,13 +236,12 @@ impl RayCast for CappedCylinder {
         let (a, aa) = (side.axis, side.axis.dot(side.axis));
         let height = |x: DVec3| (x - side.point).dot(a);
         let mut best: Option<Hit> = None;
-        let mut consider = |t: f64, normal: &dyn Fn(DVec3) -> DVec3| {
+        let mut consider = |t: f64, et: f64, normal: &dyn Fn(DVec3) -> DVec3| {
             if range.admits(t) && best.is_none_or(|b| t < b.t) {
-                let point = ray.at(t);
+                let hit = Hit::at(ray, t, et, DVec3::ZERO);
                 best = Some(Hit {
-                    t,
-                    point,
-                    normal: normal(point),
+                    normal: normal(hit.point),
+                    ..hit
                 });
             }
         };
@@ -251,11 +251,11 @@ impl RayCast for CappedCylinder {
         };
         let side_normal = |x: DVec3| side.normal_at(x, -ray.direction());
         match side.line_roots(ray) {
-            Roots::One(t) if on_side(t) => consider(t, &side_normal),
+            Roots::One(t) if on_side(t) => consider(t, root_t_error(t), &side_normal),
             Roots::Two(t1, t2) => {
                 for t in [t1, t2] {
                     if on_side(t) {
-                        consider(t, &side_normal);
+                        consider(t, root_t_error(t), &side_normal);
                     }
                 }
             }
@@ -265,11 +265,22 @@ impl RayCast for CappedCylinder {
         let (h0, dh) = (height(ray.origin()), ray.direction().dot(a));
         if dh != 0.0 {
             let rr = side.radius * side.radius * aa;
+            let (e_h0, e_dh) = (
+                dot_error(ray.origin() - side.point, a),
+                dot_error(ray.direction(), a),
+            );
             for (level, sign) in [(0.0, -1.0), (aa, 1.0)] {
-                let t = (level - h0) / dh;
+                let num = level - h0;
+                let t = num / dh;
                 let radial = (ray.at(t) - side.point).cross(a);
                 if radial.dot(radial) <= rr {
-                    consider(t, &|_| a.normalize() * sign);
+                    // The end plane's level |a|^2 is `aa` within gamma(3) of
+                    // it (gamma(4) of the computed `aa`), `h0` within its dot
+                    // product's bound, and `num` rounds once more.
+                    let e_num = e_h0 + gamma(4) * level + U * num.abs() * (1.0 + 2.0 * U);
+                    consider(t, quotient_t_error(t, e_num, dh, e_dh), &|_| {
+                        a.normalize() * sign
+                    });
                 }
             }
         }

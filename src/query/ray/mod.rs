@@ -93,6 +93,28 @@ pub struct Hit {
     /// outside of a closed shape (for a plane, a disk or a triangle: the
     /// side its definition names; see each shape).
     pub normal: DVec3,
+    /// A per-axis bound on `point`'s distance from the exact point
+    /// `ray.at(t_exact)` of the surface crossing returned:
+    /// `|point_k - (o_k + d_k t_exact)| <= error_k` for each axis `k`. What
+    /// a secondary ray needs to leave the surface (pbrt-v4's `pError`).
+    /// Derived beside each shape's cast from the bound on its `t` (see
+    /// `point_error.rs`); infinite where a cast's `t` carries no certified
+    /// bound (the cone's lateral surface, for now).
+    pub error: DVec3,
+}
+
+impl Hit {
+    /// The hit at `t`, `|t - t_exact| <= et`, with the point's error.
+    #[inline(always)]
+    pub(crate) fn at(ray: &Ray, t: f64, et: f64, normal: DVec3) -> Hit {
+        let point = ray.at(t);
+        Hit {
+            t,
+            point,
+            normal,
+            error: point_error::point_error(ray, t, point, et),
+        }
+    }
 }
 
 /// A shape a ray can be cast against.
@@ -155,6 +177,7 @@ line_roots_by_inherent!(
 mod cone;
 mod cylinder;
 mod plane;
+mod point_error;
 mod quadric;
 mod sphere;
 
@@ -172,6 +195,8 @@ pub(crate) fn hit_at(
         t,
         point,
         normal: normal(point),
+        // The quadrics' roots carry their `line_roots` bounds.
+        error: point_error::point_error(ray, t, point, point_error::root_t_error(t)),
     })
 }
 

@@ -1,5 +1,6 @@
 //! Ray against [`Plane`] and [`Disk`].
 
+use super::point_error::{dot_error, quotient_t_error};
 use super::{Hit, RayCast};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
@@ -27,11 +28,15 @@ impl RayCast for Plane {
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let t = self.line_parameter(ray).filter(|&t| range.admits(t))?;
-        Some(Hit {
+        // `t = fl(num / den)` with both dot products' errors bounded.
+        let n = self.normal;
+        let et = quotient_t_error(
             t,
-            point: ray.at(t),
-            normal: self.normal.normalize(),
-        })
+            dot_error(self.point - ray.origin(), n),
+            ray.direction().dot(n),
+            dot_error(ray.direction(), n),
+        );
+        Some(Hit::at(ray, t, et, n.normalize()))
     }
 }
 
