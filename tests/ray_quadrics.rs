@@ -388,6 +388,23 @@ fn constructors_reject_bad_input() {
     );
 }
 
+/// Where the surface has no normal (a point sphere), a cast's normal is the
+/// reversed ray direction, a unit vector even when the direction's squared
+/// length underflows or overflows.
+#[test]
+fn fallback_normals_are_unit_for_tiny_and_huge_directions() {
+    let point = Sphere::new([0.0; 3], 0.0).unwrap();
+    for (o, d) in [
+        ([-1e-310, 0.0, 0.0], [5e-324, 0.0, 0.0]),
+        ([-f64::MAX, 0.0, 0.0], [f64::MAX, 0.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+    ] {
+        let ray = Ray::new(o, d).unwrap();
+        let hit = point.cast(&ray, Interval::FORWARD).unwrap();
+        assert_eq!(hit.normal.to_array(), [-1.0, 0.0, 0.0], "{ray:?}");
+    }
+}
+
 #[test]
 fn fuzz_findings() {
     // Coefficients near f64::MAX: doubling them in f64 overflowed.
