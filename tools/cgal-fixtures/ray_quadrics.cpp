@@ -747,6 +747,52 @@ Case quadric_degree_zero_off(Rng& r) {
   return quadric_case(padd(f.x0(), uniform3(r, 2)), lattice3(f.dir(mul3(V, r.sign())), int(r.range(-4, 4))), coef);
 }
 
+// A plane or a double plane written as a quadric: q = mu (y1 - c) (A..F = 0
+// in x-space too: an affine map keeps the degree) or q = l (y1 - c)^2, in a
+// random frame. `mode` 0: the line lies in the plane (n = inf); 1: parallel
+// to it, off it (n = 0); 2 (planes only): crossing it (n = 1, degree one).
+Case quadric_plane(Rng& r, int mode, bool twice) {
+  int64_t c = r.range(-8, 8), k = r.range(1, 4);
+  YQuadric y = twice ? YQuadric{{k, 0, 0}, {-2 * k * c, 0, 0}, k * c * c} : YQuadric{{0, 0, 0}, {k, 0, 0}, -k * c};
+  I3 P = {c, r.range(-8, 8), r.range(-8, 8)}, V;
+  if (mode == 2) {
+    do V = nonzero_bits3(r, 4);
+    while (V[0] == 0);
+  } else {
+    do V = {0, r.bits(4), r.bits(4)};
+    while (zero3(V));
+  }
+  if (mode == 1) P[0] += r.range(1, 3) * r.sign();
+  Frame f(r);
+  Case coef;
+  if (!place(r, y, f, coef)) return {};
+  P3 o = f.point(add3(P, mul3(V, r.range(-(1 << 16), 1 << 16))));
+  return quadric_case(o, lattice3(f.dir(V), int(r.range(-4, 4))), coef);
+}
+
+// The all-zero quadric (every coefficient 0, 30% of them written -0): every
+// line lies on it. Each coordinate of o (of d) is 0, a subnormal, +-DBL_MAX
+// or uniform * 2^e with one e per vector from the whole exponent range.
+Case quadric_all_zero(Rng& r) {
+  auto vec = [&r]() {
+    int e = int(r.range(-1074, 1023));
+    P3 v;
+    for (double& x : v) switch (r.next() % 8) {
+        case 0: x = 0.0; break;
+        case 1: x = lattice(r.bits(40), -1074); break;
+        case 2: x = r.sign() * DBL_MAX; break;
+        default: x = std::ldexp(r.sym(), e);
+      }
+    return v;
+  };
+  P3 o = vec(), d = vec();
+  if (d == P3{0, 0, 0}) return {};
+  Case coef(10, 0.0);
+  for (double& x : coef)
+    if (r.chance(30)) x = -0.0;
+  return quadric_case(o, d, coef);
+}
+
 // Exactly tangent: an integer point T on q (kappa chosen so that q(T) = 0;
 // on a cone, T on a ruling), gradient G = 2 lam T + lin != 0, direction
 // V = G x w with q2(V) != 0; the line T + (t - S) V touches at t = S.
@@ -853,6 +899,8 @@ void gen_ray_quadric(RayWriter& w) {
              "along an asymptotic direction: cones, hyperboloids (one and two sheets), hyperbolic paraboloids, "
              "plane pairs",
              50, [](Rng& r) { return quadric_degree_one(r, false); }, "1");
+  quad_block(w, k, "planes written as quadrics (A..F = 0: mu (y1 - c) in a random frame), lines crossing them", 50,
+             [](Rng& r) { return quadric_plane(r, 2, false); }, "1");
 
   w.section("degree-zero", "leading and linear coefficients exactly 0: n = 0, or inf on the surface", "0i", "0i");
   quad_block(w, k, "lines on the quadric: cone rulings through the apex, rulings of one-sheet hyperboloids and "
@@ -860,6 +908,12 @@ void gen_ray_quadric(RayWriter& w) {
              quadric_line_on, "i");
   quad_block(w, k, "along a cylinder's or parallel plane pair's direction, along a plane pair's common line, "
              "origin off the surface: n = 0", 50, quadric_degree_zero_off, "0");
+  quad_block(w, k, "the all-zero quadric (A..J all 0, some written -0): every line lies on it, n = inf; o and d "
+             "from subnormal to DBL_MAX", 60, quadric_all_zero, "i");
+  quad_block(w, k, "lines in a plane written as a quadric (A..F = 0) or in a double plane l (y1 - c)^2: n = inf", 50,
+             [](Rng& r) { return quadric_plane(r, 0, r.chance(50)); }, "i");
+  quad_block(w, k, "lines parallel to such a plane or double plane, off it: n = 0", 50,
+             [](Rng& r) { return quadric_plane(r, 1, r.chance(50)); }, "0");
 
   w.section("tangent",
             "exactly tangent (double root): q(T) = 0 at an integer point, direction (grad q(T)) x w; ellipsoids, "
