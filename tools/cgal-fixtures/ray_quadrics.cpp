@@ -126,6 +126,71 @@ Case sphere_on_surface(Rng& r) {
   return sphere_case(o, d, lattice3(C, e), lattice(m * N, e));
 }
 
+// ---------------------------------------------------------------------------
+// Two distinct roots 1-3 ulps apart, for all three kinds.
+
+// A double r1 and r2 = r1 moved up by k = 1..kmax ulps; r1 is itself +-2^e or
+// +-(1 + u) 2^e moved down by 0..k ulps, so some pairs straddle a power of
+// two (where the ulp changes). delta = r2 - r1 is exact (Sterbenz).
+struct ClosePair {
+  double r1, r2, delta;
+};
+
+ClosePair close_pair(Rng& r, int kmax) {
+  int e = int(r.range(-300, 300)), k = int(r.range(1, kmax));
+  double base = r.sign() * (r.chance(30) ? std::ldexp(1.0, e) : std::ldexp(1.0 + r.unit(), e));
+  double r1 = step_ulps(base, -int(r.range(0, k)));
+  double r2 = step_ulps(r1, k);
+  return ClosePair{r1, r2, r2 - r1};
+}
+
+// The axes permuted at random, the same way in every vector.
+void permute_axes(Rng& r, std::vector<P3*> vs) {
+  int perm[3] = {0, 1, 2};
+  for (int i = 2; i > 0; --i) std::swap(perm[i], perm[r.next() % (i + 1)]);
+  for (P3* v : vs) {
+    P3 x = *v;
+    for (int i = 0; i < 3; ++i) (*v)[perm[i]] = x[i];
+  }
+}
+
+// A line along axis 0 through a circle in the plane of axes 0 and 1 (a
+// sphere's or a cylinder's section) whose chord has the parameters r1 and
+// r2 of `p` as ends, or nearly: d = (dx, 0, 0), dx = +-2^j; centre
+// c_0 = dx r1 / 2 and origin o_0 = -dx r2 / 2, so (c_0 - o_0) / dx =
+// (r1 + r2) / 2 exactly; the centre h off the line along axis 1, radius R.
+// The roots are (r1 + r2) / 2 +- sqrt(R^2 - h^2) / |dx|. exact: R^2 - h^2 =
+// w^2 with w = |dx| delta / 2 (h = 0 and R = w, or R, h = w (2^m +- 2^-m) / 2),
+// the roots exactly r1 and r2; otherwise R = w c1 and h = w c2 with c1 in
+// [1/2, 3/2] and c2 in [0, c1) dyadic: irrational (or dyadic, not double)
+// roots delta sqrt(c1^2 - c2^2) apart, so with delta of 1 or 2 ulps at most
+// 3 ulps apart. o_1 and o_2 = c_2 are multiples of
+// the last bits of h, so c_1 = o_1 + h is exact.
+struct Chord {
+  P3 o, d, c;
+  double R;
+};
+
+Chord close_chord(Rng& r, const ClosePair& p, bool exact) {
+  int j = int(r.range(-8, 8));
+  double dx = r.sign() * std::ldexp(1.0, j), w = std::ldexp(p.delta, j - 1);
+  double R, h;
+  if (exact && r.chance(30)) {
+    R = w, h = 0;
+  } else if (exact) {
+    double m = std::ldexp(1.0, int(r.range(1, 6)));
+    R = w * (m + 1 / m) / 2, h = w * (m - 1 / m) / 2;
+  } else {
+    int64_t c1 = r.range(512, 1536), c2 = r.range(0, c1 - 1);
+    R = w * std::ldexp(double(c1), -10), h = w * std::ldexp(double(c2), -10);
+  }
+  h *= r.sign();
+  double y0 = h == 0 ? arbitrary(r) : lattice(r.bits(20), low_bit_exp(h)), z0 = arbitrary(r);
+  Chord ch{{-dx * p.r2 / 2, y0, z0}, {dx, 0, 0}, {dx * p.r1 / 2, y0 + h, z0}, R};
+  if (Q(ch.c[1]) != Q(y0) + Q(h)) die("close_chord: inexact offset");
+  return ch;
+}
+
 void gen_ray_sphere(RayWriter& w) {
   const QuadKind& k = kRaySphere;
   w.section("random", "unit-ish spheres (centre in [-1,1]^3, r in [0.25,1]), origins in [-2,2]^3 or [-4,4]^3", "02", "012");
@@ -224,6 +289,23 @@ void gen_ray_sphere(RayWriter& w) {
       return v;
     });
   }
+
+  w.section("close-roots",
+            "two distinct roots 1-3 ulps apart: a line along an axis, d = +-2^j e, through a tiny sphere at "
+            "(r1 + r2) / 2 from the origin (|r1| ~2^-300..2^300), h off the line; axes permuted",
+            "2", "2");
+  quad_block(w, k, "R^2 - h^2 = (|d| (r2 - r1) / 2)^2: roots exactly r1 and r2, doubles 1, 2 or 3 ulps apart", 60,
+             [](Rng& r) {
+               Chord ch = close_chord(r, close_pair(r, 3), true);
+               permute_axes(r, {&ch.o, &ch.d, &ch.c});
+               return sphere_case(ch.o, ch.d, ch.c, ch.R);
+             });
+  quad_block(w, k, "R and h other dyadic multiples of |d| (r2 - r1) / 2: roots within 1-3 ulps, not doubles", 50,
+             [](Rng& r) {
+               Chord ch = close_chord(r, close_pair(r, 2), false);
+               permute_axes(r, {&ch.o, &ch.d, &ch.c});
+               return sphere_case(ch.o, ch.d, ch.c, ch.R);
+             });
 }
 
 // ---------------------------------------------------------------------------
@@ -440,6 +522,23 @@ void gen_ray_cylinder(RayWriter& w) {
     std::copy(a.begin(), a.end(), v.begin() + 9);
     return v;
   });
+
+  w.section("close-roots",
+            "two distinct roots 1-3 ulps apart: the sphere's close-roots chords as sections of a cylinder along "
+            "axis 2 (a = (0, 0, A), A arbitrary), d = (+-2^j, 0, dz) with dz arbitrary; axes permuted",
+            "2", "2");
+  for (bool exact : {true, false}) {
+    quad_block(w, k,
+               exact ? "R^2 - h^2 = (|d_0| (r2 - r1) / 2)^2: roots exactly r1 and r2, doubles 1, 2 or 3 ulps apart"
+                     : "R and h other dyadic multiples of |d_0| (r2 - r1) / 2: roots within 1-3 ulps, not doubles",
+               exact ? 60 : 50, [exact](Rng& r) {
+                 Chord ch = close_chord(r, close_pair(r, exact ? 3 : 2), exact);
+                 P3 a = {0, 0, arbitrary(r)};
+                 ch.d[2] = r.chance(30) ? 0.0 : arbitrary(r);
+                 permute_axes(r, {&ch.o, &ch.d, &ch.c, &a});
+                 return cylinder_case(ch.o, ch.d, ch.c, a, ch.R);
+               });
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -867,6 +966,36 @@ Case quadric_far(Rng& r, bool sphere) {
   return quadric_case(o, d, coef);
 }
 
+// D x_i x_j (+ J) along o + t d: D (o_i + t d_i)(o_j + t d_j) has the
+// roots -o_i / d_i and -o_j / d_j (the plane pair x_i x_j = 0). mode 0:
+// d_i, d_j = +-2^[-8,8], o_i = -r1 d_i, o_j = -r2 d_j: the roots are exactly
+// r1 and r2 of a close pair. mode 1: d_i, d_j odd (3..15) times 2^[-8,8],
+// o_i, o_j = -r1 d_i, -r2 d_j rounded: rational roots near r1 and r2. mode 2:
+// as mode 0 with r2 = r1 + 1 ulp, D = +-2^k and J = D d_i d_j c delta^2,
+// c in [-2, 3/16] (multiples of 2^-8): irrational roots (r1 + r2) / 2 +-
+// delta sqrt(1/4 - c), 0.5 to 3 ulps apart.
+// The third coordinate of o and d is arbitrary; D too, in modes 0 and 1.
+Case quadric_close(Rng& r, int mode) {
+  ClosePair p = close_pair(r, mode == 2 ? 1 : 3);
+  int i = int(r.next() % 3), j = (i + 1 + int(r.next() % 2)) % 3, l = 3 - i - j;
+  auto dir = [&r, mode] {
+    double odd = mode == 1 ? double(2 * r.range(1, 7) + 1) : 1.0;
+    return r.sign() * std::ldexp(odd, int(r.range(-8, 8)));
+  };
+  P3 o, d;
+  d[i] = dir(), d[j] = dir(), d[l] = arbitrary(r);
+  o[i] = -p.r1 * d[i], o[j] = -p.r2 * d[j], o[l] = arbitrary(r);
+  Case coef(10, 0.0);
+  double D = mode == 2 ? r.sign() * std::ldexp(1.0, int(r.range(-10, 10))) : arbitrary(r);
+  coef[3 + std::min(i, j) + std::max(i, j) - 1] = D;  // xy, xz, yz: D, E, F
+  if (mode == 2) {
+    Q J = Q(D) * Q(d[i]) * Q(d[j]) * Q(p.delta) * Q(p.delta) * Q(r.range(-512, 48)) / 256;
+    coef[9] = J.get_d();
+    if (sgn(J) == 0 || Q(coef[9]) != J) return {};
+  }
+  return quadric_case(o, d, coef);
+}
+
 void gen_ray_quadric(RayWriter& w) {
   const QuadKind& k = kRayQuadric;
   w.section("random",
@@ -933,6 +1062,17 @@ void gen_ray_quadric(RayWriter& w) {
   quad_block(w, k, "sphere x.x - 2 c.x + c.c - r^2", 50, [](Rng& r) { return quadric_far(r, true); });
   quad_block(w, k, "cylinder |(x - p) x a|^2 - r^2 |a|^2, a a small integer vector", 50,
              [](Rng& r) { return quadric_far(r, false); });
+
+  w.section("close-roots",
+            "two distinct roots 1-3 ulps apart (|r1| ~2^-300..2^300): the plane pair D x_i x_j = 0 (+ J) along "
+            "o + t d, roots -o_i / d_i and -o_j / d_j",
+            "2", "2");
+  quad_block(w, k, "d_i, d_j = +-2^k, o_i = -r1 d_i, o_j = -r2 d_j: roots exactly r1 and r2, doubles 1, 2 or 3 "
+             "ulps apart", 60, [](Rng& r) { return quadric_close(r, 0); }, "2");
+  quad_block(w, k, "d_i, d_j odd (3..15) times 2^k, o_i = -r1 d_i and o_j = -r2 d_j rounded: rational roots "
+             "within 1-3 ulps, not doubles", 50, [](Rng& r) { return quadric_close(r, 1); }, "2");
+  quad_block(w, k, "D x_i x_j + J, J = D d_i d_j c (r2 - r1)^2, r2 - r1 one ulp, c in [-2, 3/16]: irrational roots "
+             "(r1 + r2) / 2 +- (r2 - r1) sqrt(1/4 - c)", 50, [](Rng& r) { return quadric_close(r, 2); }, "2");
 }
 
 const char* const kRayHeaderQuad =
