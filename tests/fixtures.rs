@@ -94,6 +94,18 @@ const KINDS: &[Kind] = &[
         oracle: Some(PerLine(oracle_plane_side)),
     },
     Kind {
+        name: "incircle",
+        min_fields: 9,
+        predicate: Some(PerLine(crate_incircle)),
+        oracle: Some(PerLine(oracle_incircle)),
+    },
+    Kind {
+        name: "insphere",
+        min_fields: 16,
+        predicate: Some(PerLine(crate_insphere)),
+        oracle: Some(PerLine(oracle_insphere)),
+    },
+    Kind {
         name: "ray_sphere",
         min_fields: 11,
         predicate: Some(PerLine(crate_ray_sphere)),
@@ -223,6 +235,36 @@ fn crate_plane_side(f: &[&str]) -> Result<Verdict, String> {
 fn oracle_plane_side(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_sign_case::<15>(f)?;
     let got = oracle::plane_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
+    Ok(compare_signs(want, got))
+}
+
+/// incircle: the crate and CGAL's `side_of_oriented_circle` share the sign
+/// convention (positive inside a counterclockwise circle).
+fn crate_incircle(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_sign_case::<8>(f)?;
+    let got = exactray::incircle(p2(&v, 0), p2(&v, 1), p2(&v, 2), p2(&v, 3));
+    Ok(compare_signs(want, got.as_i8()))
+}
+
+fn oracle_incircle(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_sign_case::<8>(f)?;
+    Ok(compare_signs(
+        want,
+        oracle::incircle(p2(&v, 0), p2(&v, 1), p2(&v, 2), p2(&v, 3)),
+    ))
+}
+
+/// insphere: the crate documents CGAL's `side_of_oriented_sphere` sign
+/// (the opposite of Shewchuk's), which the fixtures hold; no conversion.
+fn crate_insphere(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_sign_case::<15>(f)?;
+    let got = exactray::insphere(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
+    Ok(compare_signs(want, got.as_i8()))
+}
+
+fn oracle_insphere(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_sign_case::<15>(f)?;
+    let got = oracle::insphere(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
     Ok(compare_signs(want, got))
 }
 

@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -306,6 +307,30 @@ inline void shuffle(Rng& r, std::vector<T>& v) {
   for (size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[r.next() % i]);
 }
 
+// Double-precision vector helpers, for building inputs (rounding allowed
+// there: the answers are computed from whatever doubles result).
+inline P3 padd(const P3& a, const P3& b) { return P3{a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline P3 psub(const P3& a, const P3& b) { return P3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline P3 pmul(const P3& a, double s) { return P3{a[0] * s, a[1] * s, a[2] * s}; }
+inline double pdot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline P3 pcross(const P3& a, const P3& b) {
+  return P3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline P3 pnormalize(const P3& a) { return pmul(a, 1.0 / std::sqrt(pdot(a, a))); }
+
+// A direction uniform on the unit sphere (rejection sampling; sqrt and
+// division are correctly rounded, so this is deterministic).
+inline P3 unit_dir(Rng& r) {
+  for (;;) {
+    P3 v = uniform3(r, 0);
+    double n2 = pdot(v, v);
+    if (n2 > 0.01 && n2 <= 1) return pnormalize(v);
+  }
+}
+
+// A non-power-of-two factor in [2^lo, 2^(hi+1)).
+inline double length_factor(Rng& r, int lo, int hi) { return std::ldexp(1.0 + r.unit(), int(r.range(lo, hi))); }
+
 // ---------------------------------------------------------------------------
 // The fixture families, one translation unit each.
 
@@ -314,6 +339,8 @@ void check_conventions();
 void gen_orient2d(Writer& w);
 void gen_orient3d(Writer& w);
 void gen_plane_side(Writer& w);
+void gen_incircle(Writer& w);
+void gen_insphere(Writer& w);
 
 // nearest.cpp: nearest-<set>.txt, one point set per file.
 void gen_nearest_files(const std::string& outdir);

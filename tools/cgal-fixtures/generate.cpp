@@ -49,6 +49,8 @@ const KindEntry KINDS[] = {
     {"orient2d", gen_orient2d, nullptr},
     {"orient3d", gen_orient3d, nullptr},
     {"plane_side", gen_plane_side, nullptr},
+    {"incircle", gen_incircle, nullptr},
+    {"insphere", gen_insphere, nullptr},
     {"nearest", nullptr, gen_nearest_files},
     {"ray_sphere", nullptr, gen_ray_sphere_files},
     {"ray_cylinder", nullptr, gen_ray_cylinder_files},

@@ -1,5 +1,6 @@
-// orient2d, orient3d, plane_side: exact signs from CGAL, the degenerate
-// configurations they are built around, and their shared section structure.
+// orient2d, orient3d, plane_side, incircle, insphere: exact signs from CGAL,
+// the degenerate configurations they are built around (collinear, coplanar,
+// cocircular, cospherical), and their shared section structure.
 
 #include "common.h"
 
@@ -38,6 +39,29 @@ int plane_side_exact(const double* v) {
   return orient3d_exact(p) * orient3d_exact(q);
 }
 
+// CGAL's side_of_oriented_circle: 1 when d is inside the circle through
+// counterclockwise a, b, c.
+int incircle_exact(const double* v) {
+  Epick::Point_2 a(v[0], v[1]), b(v[2], v[3]), c(v[4], v[5]), d(v[6], v[7]);
+  int s = int(CGAL::side_of_oriented_circle(a, b, c, d));
+  auto q = [](double x) { return CGAL::Exact_rational(x); };
+  RatK::Point_2 ra(q(v[0]), q(v[1])), rb(q(v[2]), q(v[3])), rc(q(v[4]), q(v[5])), rd(q(v[6]), q(v[7]));
+  if (int(CGAL::side_of_oriented_circle(ra, rb, rc, rd)) != s) die("Epick and rational incircle disagree");
+  return s;
+}
+
+// CGAL's side_of_oriented_sphere: 1 when e is inside the sphere through
+// a, b, c, d with orientation(a, b, c, d) positive.
+int insphere_exact(const double* v) {
+  auto ep = [v](int i) { return Epick::Point_3(v[3 * i], v[3 * i + 1], v[3 * i + 2]); };
+  auto q = [](double x) { return CGAL::Exact_rational(x); };
+  auto rp = [v, q](int i) { return RatK::Point_3(q(v[3 * i]), q(v[3 * i + 1]), q(v[3 * i + 2])); };
+  int s = int(CGAL::side_of_oriented_sphere(ep(0), ep(1), ep(2), ep(3), ep(4)));
+  if (int(CGAL::side_of_oriented_sphere(rp(0), rp(1), rp(2), rp(3), rp(4))) != s)
+    die("Epick and rational insphere disagree");
+  return s;
+}
+
 // Plain double evaluations, only to report how hard each section is.
 int sign_of(double d) { return (d > 0) - (d < 0); }
 
@@ -50,6 +74,35 @@ int orient3d_naive(const double* v) {
   double cx = v[6] - v[0], cy = v[7] - v[1], cz = v[8] - v[2];
   double dx = v[9] - v[0], dy = v[10] - v[1], dz = v[11] - v[2];
   return sign_of(bx * (cy * dz - cz * dy) - by * (cx * dz - cz * dx) + bz * (cx * dy - cy * dx));
+}
+
+// det[[a-d, |a-d|^2], [b-d, |b-d|^2], [c-d, |c-d|^2]] (Shewchuk's incircle).
+int incircle_naive(const double* v) {
+  double r[3][3];
+  for (int i = 0; i < 3; ++i) {
+    double x = v[2 * i] - v[6], y = v[2 * i + 1] - v[7];
+    r[i][0] = x, r[i][1] = y, r[i][2] = x * x + y * y;
+  }
+  return sign_of(r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]) +
+                 r[1][2] * (r[2][0] * r[0][1] - r[2][1] * r[0][0]) +
+                 r[2][2] * (r[0][0] * r[1][1] - r[0][1] * r[1][0]));
+}
+
+// -det[[a-e, |a-e|^2], ..., [d-e, |d-e|^2]], expanded along the lift column:
+// CGAL's sign (the opposite of Shewchuk's insphere).
+int insphere_naive(const double* v) {
+  double r[4][4];
+  for (int i = 0; i < 4; ++i) {
+    double x = v[3 * i] - v[12], y = v[3 * i + 1] - v[13], z = v[3 * i + 2] - v[14];
+    r[i][0] = x, r[i][1] = y, r[i][2] = z, r[i][3] = x * x + y * y + z * z;
+  }
+  auto minor = [&r](int a, int b, int c) {
+    return r[a][0] * (r[b][1] * r[c][2] - r[b][2] * r[c][1]) - r[a][1] * (r[b][0] * r[c][2] - r[b][2] * r[c][0]) +
+           r[a][2] * (r[b][0] * r[c][1] - r[b][1] * r[c][0]);
+  };
+  double det = -r[0][3] * minor(1, 2, 3) + r[1][3] * minor(0, 2, 3) - r[2][3] * minor(0, 1, 3) +
+               r[3][3] * minor(0, 1, 2);
+  return -sign_of(det);
 }
 
 int plane_side_naive(const double* v) {
@@ -69,6 +122,21 @@ void check_conventions() {
   const double o[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};  // det(I) = 1
   if (orient2d_exact(l) != 1 || orient2d_naive(l) != 1) die("orient2d convention");
   if (orient3d_exact(o) != 1 || orient3d_naive(o) != 1) die("orient3d convention");
+  // The unit circle through counterclockwise (1,0), (0,1), (-1,0): the
+  // origin inside, (0,-1) on it, (2,0) outside; reversed order flips it.
+  const double c_in[8] = {1, 0, 0, 1, -1, 0, 0, 0}, c_on[8] = {1, 0, 0, 1, -1, 0, 0, -1};
+  const double c_out[8] = {1, 0, 0, 1, -1, 0, 2, 0}, c_cw[8] = {0, 1, 1, 0, -1, 0, 0, 0};
+  if (incircle_exact(c_in) != 1 || incircle_naive(c_in) != 1 || incircle_exact(c_on) != 0 ||
+      incircle_exact(c_out) != -1 || incircle_naive(c_out) != -1 || incircle_exact(c_cw) != -1)
+    die("incircle convention");
+  // The positively oriented tetrahedron 0, e1, e2, e3 (orient3d = 1): its
+  // circumsphere holds (1/4, 1/4, 1/4) and passes through (1, 1, 1).
+  double s_in[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.25, 0.25, 0.25};
+  if (insphere_exact(s_in) != 1 || insphere_naive(s_in) != 1) die("insphere convention");
+  s_in[12] = s_in[13] = s_in[14] = 1;
+  if (insphere_exact(s_in) != 0) die("insphere convention (on the sphere)");
+  s_in[12] = s_in[13] = s_in[14] = 2;
+  if (insphere_exact(s_in) != -1 || insphere_naive(s_in) != -1) die("insphere convention (outside)");
 }
 
 namespace {
@@ -86,6 +154,12 @@ enum class Variant {
   CollinearTri,  // 3D only: the triangle is a segment, the query anywhere
   Aniso,         // mixed: lattice scaled by 2^~950 on some axes, 2^~-1040 on others
   SharedHuge,    // mixed: one huge coordinate shared by all points, the rest tiny
+  // incircle and insphere only (the others give collinear or coplanar
+  // points there, which the lifted determinant also takes to zero):
+  Cyclic,        // integer points on a circle / sphere around a 30-bit centre, times 2^e
+  CyclicFar,     // the same with radii ~2^20-2^28
+  CyclicOffset,  // a small circle / sphere around 2^40 + dyadic offsets (53-bit values)
+  Cocircular,    // insphere only: four points on a circle in a tilted plane, the fifth anywhere
 };
 
 const std::vector<Variant> kPlainVariants2 = {Variant::LatticeSmall, Variant::LatticeFar, Variant::Offset40,
@@ -94,6 +168,15 @@ const std::vector<Variant> kPlainVariants3 = {Variant::LatticeSmall, Variant::La
                                               Variant::Axis,         Variant::Diagonal,   Variant::Repeated,
                                               Variant::CollinearTri};
 const std::vector<Variant> kMixedVariants = {Variant::Aniso, Variant::SharedHuge};
+const std::vector<Variant> kCircleVariants = {Variant::Cyclic,       Variant::CyclicFar, Variant::CyclicOffset,
+                                              Variant::LatticeSmall, Variant::Axis,      Variant::Repeated};
+const std::vector<Variant> kSphereVariants = {Variant::Cyclic,       Variant::CyclicFar, Variant::CyclicOffset,
+                                              Variant::Cocircular,   Variant::LatticeSmall, Variant::Axis,
+                                              Variant::Repeated};
+
+bool cyclic(Variant v) {
+  return v == Variant::Cyclic || v == Variant::CyclicFar || v == Variant::CyclicOffset || v == Variant::Cocircular;
+}
 
 const char* variant_name(Variant v) {
   switch (v) {
@@ -106,6 +189,10 @@ const char* variant_name(Variant v) {
     case Variant::CollinearTri: return "collinear triangle, query anywhere";
     case Variant::Aniso: return "lattice scaled by ~2^950 on some axes and ~2^-1040 on others";
     case Variant::SharedHuge: return "huge coordinate equal across points, tiny others";
+    case Variant::Cyclic: return "integer points on a circle or sphere (radius < 2^8) around a 30-bit centre, times 2^e";
+    case Variant::CyclicFar: return "integer points on a circle (radius ~2^21) or sphere (~2^20..2^28), times 2^e";
+    case Variant::CyclicOffset: return "a small circle or sphere around 2^40 + dyadic offsets (53-bit values)";
+    case Variant::Cocircular: return "four integer points on a circle in a tilted plane, the fifth anywhere";
   }
   return "";
 }
@@ -179,6 +266,7 @@ std::vector<P2> make_line(Rng& r, Variant v) {
       break;
     }
     case Variant::CollinearTri: die("CollinearTri is a 3D variant");
+    default: die("a cyclic variant is not a line");
   }
   return pts;
 }
@@ -288,6 +376,7 @@ Plane make_plane(Rng& r, Variant v) {
       }
       break;
     }
+    default: die("a cyclic variant is not a plane");
   }
   Plane pl;
   pl.tri = {pts[0], pts[1], pts[2]};
@@ -295,8 +384,149 @@ Plane make_plane(Rng& r, Variant v) {
   return pl;
 }
 
+// Integer points on circles and spheres, from Gaussian integers and
+// quaternions: a product of Gaussian integers (quaternions) has the product
+// of their norms as its norm, so products of the same factors, each
+// conjugated or not (each chosen among the quaternions of one norm), lie on
+// one circle |z|^2 = N (one sphere |W| = N, W the rotation of i by the
+// product: the Pythagorean quadruple of `pythagorean` in the ray kinds).
+using I2 = std::array<int64_t, 2>;
+using Quat = std::array<int64_t, 4>;
+
+// Gaussian primes of norms 5, 13, 17, 29, 37, 41, 53, 61, 73.
+const I2 kGaussPrimes[] = {{2, 1}, {3, 2}, {4, 1}, {5, 2}, {6, 1}, {5, 4}, {7, 2}, {6, 5}, {8, 3}};
+
+I2 gmul(const I2& a, const I2& b) { return I2{a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]}; }
+
+// n points on the circle |z|^2 = prod of the norms of the first k Gaussian
+// primes: each a product of those primes, each conjugated or not, times a
+// unit.
+std::vector<I2> circle_points(Rng& r, int k, size_t n) {
+  std::vector<I2> out;
+  for (size_t i = 0; i < n; ++i) {
+    I2 z = {1, 0};
+    for (int j = 0; j < k; ++j) {
+      I2 g = kGaussPrimes[j];
+      if (r.chance(50)) g[1] = -g[1];
+      z = gmul(z, g);
+    }
+    for (int u = int(r.next() % 4); u > 0; --u) z = {-z[1], z[0]};  // times i
+    out.push_back(z);
+  }
+  return out;
+}
+
+Quat qmul(const Quat& a, const Quat& b) {
+  return Quat{a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
+              a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+              a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
+              a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
+}
+
+int64_t qnorm(const Quat& q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
+
+// Every integer quaternion of norm p (brute force; p is small).
+std::vector<Quat> quats_of_norm(int64_t p) {
+  std::vector<Quat> out;
+  int64_t m = 0;
+  while ((m + 1) * (m + 1) <= p) ++m;
+  for (int64_t a = -m; a <= m; ++a)
+    for (int64_t b = -m; b <= m; ++b)
+      for (int64_t c = -m; c <= m; ++c)
+        for (int64_t d = -m; d <= m; ++d)
+          if (qnorm({a, b, c, d}) == p) out.push_back({a, b, c, d});
+  return out;
+}
+
+// n points on the sphere |W| = N, N = the product of the first k norms of
+// {3, 5, 7, 11, 13, 3, 5, ...}: W is the rotation of i by a product of one
+// random quaternion of each of those norms.
+std::vector<I3> sphere_points(Rng& r, int k, size_t n) {
+  static const int64_t norms[5] = {3, 5, 7, 11, 13};
+  static const std::vector<Quat> factors[5] = {quats_of_norm(3), quats_of_norm(5), quats_of_norm(7),
+                                               quats_of_norm(11), quats_of_norm(13)};
+  std::vector<I3> out;
+  for (size_t i = 0; i < n; ++i) {
+    Quat q = {1, 0, 0, 0};
+    int64_t N = 1;
+    for (int j = 0; j < k; ++j) {
+      q = qmul(q, r.pick(factors[j % 5]));
+      N *= norms[j % 5];
+    }
+    if (qnorm(q) != N) die("quaternion norm");
+    I3 w = {q[0] * q[0] + q[1] * q[1] - q[2] * q[2] - q[3] * q[3], 2 * (q[0] * q[3] + q[1] * q[2]),
+            2 * (q[1] * q[3] - q[0] * q[2])};
+    if (w[0] * w[0] + w[1] * w[1] + w[2] * w[2] != N * N) die("not on the sphere");
+    out.push_back(w);
+  }
+  return out;
+}
+
+// A 30-bit (CyclicFar: 20-bit) centre, or (CyclicOffset) one near 2^52 at
+// 2^-12, and the exponent the integer points are scaled by.
+int64_t cyclic_centre(Rng& r, Variant v) {
+  switch (v) {
+    case Variant::CyclicFar: return r.bits(20);
+    case Variant::CyclicOffset: return r.sign() * ((int64_t(1) << 52) + r.range(0, int64_t(1) << 32));
+    default: return r.bits(30);
+  }
+}
+
+int cyclic_exp(Rng& r, Variant v) {
+  switch (v) {
+    case Variant::CyclicFar: return int(r.range(-20, 10));
+    case Variant::CyclicOffset: return -12;
+    default: return int(r.range(-70, -30));
+  }
+}
+
+// n points exactly on one circle: C + z, z from circle_points with 2-4
+// primes (CyclicFar: 8-9, radius ~2^21), times 2^e.
+std::vector<P2> make_circle(Rng& r, Variant v, size_t n) {
+  int k = v == Variant::CyclicFar ? int(r.range(8, 9)) : int(r.range(2, 4));
+  I2 C = {cyclic_centre(r, v), cyclic_centre(r, v)};
+  int e = cyclic_exp(r, v);
+  std::vector<P2> pts;
+  for (const I2& z : circle_points(r, k, n)) pts.push_back({lattice(C[0] + z[0], e), lattice(C[1] + z[1], e)});
+  return pts;
+}
+
+// n points exactly on one sphere: C + W, W from sphere_points with 2-3
+// factors (CyclicFar: 8-10, radius ~2^20..2^28), times 2^e. Cocircular:
+// four points M (x, y, h) + C, (x, y) on a circle from circle_points and M
+// the integer matrix |q|^2 times the rotation of a random quaternion q
+// (a similarity, so the circle maps to a circle in a tilted plane), then
+// one lattice point anywhere near them.
+std::vector<P3> make_sphere(Rng& r, Variant v, size_t n) {
+  I3 C = {cyclic_centre(r, v), cyclic_centre(r, v), cyclic_centre(r, v)};
+  int e = v == Variant::Cocircular ? int(r.range(-40, 0)) : cyclic_exp(r, v);
+  std::vector<I3> ws;
+  if (v == Variant::Cocircular) {
+    Quat q;
+    do q = {r.range(-3, 3), r.range(-3, 3), r.range(-3, 3), r.range(-3, 3)};
+    while (qnorm(q) == 0);
+    int64_t a = q[0], b = q[1], c = q[2], d = q[3];
+    const int64_t M[3][3] = {{a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c)},
+                             {2 * (b * c + a * d), a * a - b * b + c * c - d * d, 2 * (c * d - a * b)},
+                             {2 * (b * d - a * c), 2 * (c * d + a * b), a * a - b * b - c * c + d * d}};
+    int64_t h = r.bits(10);
+    for (const I2& z : circle_points(r, int(r.range(2, 3)), 4)) {
+      const int64_t x[3] = {z[0], z[1], h};
+      ws.push_back({M[0][0] * x[0] + M[0][1] * x[1] + M[0][2] * x[2], M[1][0] * x[0] + M[1][1] * x[1] + M[1][2] * x[2],
+                    M[2][0] * x[0] + M[2][1] * x[1] + M[2][2] * x[2]});
+    }
+    while (ws.size() < n) ws.push_back({r.bits(12), r.bits(12), r.bits(12)});
+  } else {
+    ws = sphere_points(r, v == Variant::CyclicFar ? int(r.range(8, 10)) : int(r.range(2, 3)), n);
+  }
+  std::vector<P3> pts;
+  for (const I3& w : ws) pts.push_back(lattice3(add3(C, w), e));
+  return pts;
+}
+
 // ---------------------------------------------------------------------------
-// Sign kinds: orient2d, orient3d, plane_side share their section structure.
+// Sign kinds: orient2d, orient3d, plane_side, incircle, insphere share their
+// section structure.
 
 struct SignKind {
   int (*exact)(const double*);
@@ -306,6 +536,11 @@ struct SignKind {
   // A case whose exact answer is 0, of the given variant.
   Case (*degenerate)(Rng&, Variant);
   const std::vector<Variant>* plain_variants;
+  // What the degenerate section holds, and the label prefix for the
+  // variants that are not cyclic (for incircle and insphere: "collinear: ",
+  // "coplanar: ").
+  const char* degenerate_what;
+  const char* flat_prefix;
 };
 
 template <size_t D>
@@ -318,6 +553,8 @@ void shuffle_points(Rng& r, Case& v, size_t first, size_t count) {
 
 void shuffle_orient2d(Rng& r, Case& v) { shuffle_points<2>(r, v, 0, 3); }
 void shuffle_orient3d(Rng& r, Case& v) { shuffle_points<3>(r, v, 0, 4); }
+void shuffle_incircle(Rng& r, Case& v) { shuffle_points<2>(r, v, 0, 4); }
+void shuffle_insphere(Rng& r, Case& v) { shuffle_points<3>(r, v, 0, 5); }
 void shuffle_plane_side(Rng& r, Case& v) {
   shuffle_points<3>(r, v, 0, 3);
   shuffle_points<3>(r, v, 3, 2);
@@ -361,12 +598,52 @@ Case degenerate_plane_side(Rng& r, Variant variant) {
   return v;
 }
 
-const SignKind kOrient2d = {orient2d_exact, orient2d_naive, shuffle_orient2d, degenerate_orient2d,
-                            &kPlainVariants2};
-const SignKind kOrient3d = {orient3d_exact, orient3d_naive, shuffle_orient3d, degenerate_orient3d,
-                            &kPlainVariants3};
-const SignKind kPlaneSide = {plane_side_exact, plane_side_naive, shuffle_plane_side, degenerate_plane_side,
-                             &kPlainVariants3};
+// Four points on one circle (cyclic variants) or one line (the others).
+Case degenerate_incircle(Rng& r, Variant variant) {
+  std::vector<P2> pts = cyclic(variant) ? make_circle(r, variant, 4) : make_line(r, variant);
+  Case v;
+  for (int i = 0; i < 4; ++i) append(v, cyclic(variant) ? pts[i] : r.pick(pts));
+  return v;
+}
+
+// Five points on one sphere, four on one circle (cyclic variants), a point
+// repeated among arbitrary ones (Repeated) or five on one plane (the others).
+Case degenerate_insphere(Rng& r, Variant variant) {
+  Case v;
+  if (cyclic(variant)) {
+    for (const P3& p : make_sphere(r, variant, 5)) append(v, p);
+    return v;
+  }
+  if (variant == Variant::Repeated) {
+    P3 a = {arbitrary(r), arbitrary(r), arbitrary(r)};
+    append(v, a);
+    append(v, a);
+    for (int i = 0; i < 3; ++i) append(v, P3{arbitrary(r), arbitrary(r), arbitrary(r)});
+    return v;
+  }
+  Plane pl = make_plane(r, variant);
+  std::vector<P3> pts(pl.tri.begin(), pl.tri.end());
+  pts.insert(pts.end(), pl.on.begin(), pl.on.end());
+  for (int i = 0; i < 5; ++i) append(v, r.pick(pts));
+  return v;
+}
+
+const char* const kFlatWhat = "exactly collinear / coplanar points, no rounding in their construction";
+const SignKind kOrient2d = {orient2d_exact,      orient2d_naive,   shuffle_orient2d, degenerate_orient2d,
+                            &kPlainVariants2,    kFlatWhat,        ""};
+const SignKind kOrient3d = {orient3d_exact,      orient3d_naive,   shuffle_orient3d, degenerate_orient3d,
+                            &kPlainVariants3,    kFlatWhat,        ""};
+const SignKind kPlaneSide = {plane_side_exact,   plane_side_naive, shuffle_plane_side, degenerate_plane_side,
+                             &kPlainVariants3,   kFlatWhat,        ""};
+const SignKind kIncircle = {incircle_exact,      incircle_naive,   shuffle_incircle, degenerate_incircle,
+                            &kCircleVariants,
+                            "exactly cocircular points (or collinear, or repeated), no rounding in their construction",
+                            "collinear: "};
+const SignKind kInsphere = {insphere_exact,      insphere_naive,   shuffle_insphere, degenerate_insphere,
+                            &kSphereVariants,
+                            "exactly cospherical points (or four cocircular, or all coplanar, or repeated), no "
+                            "rounding in their construction",
+                            "coplanar: "};
 
 void emit(Writer& w, const SignKind& k, const Case& v) { w.emit(v, k.exact(v.data()), k.naive(v.data())); }
 
@@ -397,7 +674,7 @@ void random_block(Writer& w, const SignKind& k, const std::string& label, int n,
 void variant_blocks(Writer& w, const SignKind& k, const std::vector<Variant>& variants, int n_each,
                     int perturb_pct, std::array<int, 2> target, bool scaled) {
   for (Variant var : variants) {
-    std::string label = variant_name(var);
+    std::string label = std::string(cyclic(var) ? "" : k.flat_prefix) + variant_name(var);
     if (perturb_pct > 0) label += ", " + std::to_string(perturb_pct) + "% moved by 1-3 ulps";
     if (scaled) label += ", scaled to max ~2^[" + std::to_string(target[0]) + "," + std::to_string(target[1]) + "]";
     Rng r = w.block(label);
@@ -433,7 +710,7 @@ void common_sections(Writer& w, const SignKind& k, size_t ncoords, const Counts&
     }
   }
 
-  w.section("degenerate", "exactly collinear / coplanar points, no rounding in their construction", "0", "0");
+  w.section("degenerate", k.degenerate_what, "0", "0");
   variant_blocks(w, k, plain, c.degenerate_each, 0, {0, 0}, false);
 
   w.section("near-degenerate", "degenerate configurations with coordinates moved by 1-3 ulps", "+-0", "+-0");
@@ -500,6 +777,63 @@ void common_sections(Writer& w, const SignKind& k, size_t ncoords, const Counts&
 // (x + 7y) % m == 0 keeps every value of x - y and every row and column.
 bool on_sublattice(int x, int y, int m) { return (x + 7 * y) % m == 0; }
 constexpr double kUlpAtHalf = 0x1p-53;
+
+// incircle and insphere: coordinates where the lifted determinant's terms
+// (degree `deg` in the coordinates: 4 for incircle, 5 for insphere)
+// underflow or overflow while the differences and their squares stay normal.
+void lifted_sections(Writer& w, const SignKind& k, size_t ncoords, int deg, int n) {
+  const std::string d = std::to_string(deg);
+  // 2^(deg e) below 2^-1074 (above 2^1024) by at least 2^deg.
+  const int under = -1074 / deg - 2, over = 1024 / deg + 2;
+  for (auto [name, lo, hi, what] :
+       {std::tuple<const char*, int, int, const char*>{"lifted-underflow", under - 30, under, "underflow"},
+        {"lifted-overflow", over, over + 30, "overflow"}}) {
+    std::string band = "2^e, e in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    w.section(name, "coordinates ~" + band + ": squares normal, the degree-" + d + " terms " + what, "+-0", "+-0");
+    int l = lo, h = hi;
+    random_block(w, k, "uniform * " + band, n, ncoords,
+                 [l, h](Rng& r) { return std::ldexp(r.sym(), int(r.range(l, h))); });
+    variant_blocks(w, k, *k.plain_variants, n / 8, 70, {lo, hi}, true);
+  }
+}
+
+// incircle and insphere: points computed in f64 on a circle or sphere,
+// c + R v / |v| with v uniform in the unit disk or ball (|v| > 0.1), so
+// rounded off it by an ulp or so: the exact sign is rarely 0.
+void float_points_section(Writer& w, const SignKind& k, int dim, int npoints, int n) {
+  w.section("float-points",
+            "points c + R v / |v| computed in f64 (v uniform in the unit " + std::string(dim == 2 ? "disk" : "ball") +
+                "): on the circle or sphere up to rounding",
+            "+-", "+-0");
+  struct Scale {
+    const char* label;
+    int ce_lo, ce_hi, re_lo, re_hi;
+  };
+  const Scale scales[] = {{"c in [-1,1]^d, R in [1/4, 2]", 0, 0, -2, 0},
+                          {"c ~2^20..2^30 from the origin, R in [1/4, 2]", 20, 30, -2, 0},
+                          {"c in [-1,1]^d, R ~2^-30..2^-20 (tiny circles and spheres)", 0, 0, -30, -20}};
+  for (const Scale& sc : scales) {
+    Rng r = w.block(sc.label);
+    for (int i = 0; i < n; ++i) {
+      int ce = int(r.range(sc.ce_lo, sc.ce_hi));
+      double R = length_factor(r, sc.re_lo, sc.re_hi - 1);
+      P3 c = uniform3(r, ce);
+      Case v;
+      for (int j = 0; j < npoints; ++j) {
+        P3 u = dim == 3 ? unit_dir(r) : P3{0, 0, 0};
+        while (dim == 2) {
+          double x = r.sym(), y = r.sym(), n2 = x * x + y * y;
+          if (n2 > 0.01 && n2 <= 1) {
+            u = {x / std::sqrt(n2), y / std::sqrt(n2), 0};
+            break;
+          }
+        }
+        for (int a = 0; a < dim; ++a) v.push_back(c[a] + R * u[a]);
+      }
+      emit(w, k, v);
+    }
+  }
+}
 
 }  // namespace
 
@@ -568,6 +902,48 @@ void gen_plane_side(Writer& w) {
       if (r.chance(67)) qx = 0.5 + double(r.range(0, 255)) * kUlpAtHalf, qz = 0.5 + double(r.range(0, 255)) * kUlpAtHalf;
       emit(w, k, {12, 12, 12, 24, 24, 24, 24, 0, 12, 0.5 + x * kUlpAtHalf, 0.5, 0.5 + y * kUlpAtHalf, qx, 0.5, qz});
     }
+}
+
+void gen_incircle(Writer& w) {
+  const SignKind& k = kIncircle;
+  common_sections(w, k, 8, Counts{250, 150, 35, 50, 100, 100, 140});
+  lifted_sections(w, k, 8, 4, 100);
+  float_points_section(w, k, 2, 4, 80);
+
+  w.section("classroom",
+            "Kettner et al.'s grid against a circle: incircle((8.5,4.5), (3.5,9.5), (0.5,8.5), p), the circle of "
+            "radius 5 around (3.5,4.5) through (0.5,0.5), p = (0.5 + x 2^-53, 0.5 + y 2^-53)",
+            "+-0", "+-0");
+  w.block("x, y in -128..127 with (x + 7y) % 32 == 0; inside where 3x + 4y > 0, outside on the tangent 3x + 4y = 0 "
+          "except at p = (0.5,0.5)");
+  for (int x = -128; x < 128; ++x)
+    for (int y = -128; y < 128; ++y)
+      if (on_sublattice(x, y, 32)) emit(w, k, {8.5, 4.5, 3.5, 9.5, 0.5, 8.5, 0.5 + x * kUlpAtHalf, 0.5 + y * kUlpAtHalf});
+}
+
+void gen_insphere(Writer& w) {
+  const SignKind& k = kInsphere;
+  common_sections(w, k, 15, Counts{200, 150, 30, 40, 80, 80, 110});
+  lifted_sections(w, k, 15, 5, 80);
+  float_points_section(w, k, 3, 5, 60);
+
+  w.section("classroom",
+            "Kettner et al.'s grid against a sphere: the sphere of radius 7 around (2.5,3.5,6.5) through "
+            "(0.5,0.5,0.5), through a = c + 7 e1, b = c + 7 e2, c + 7 e3 and c + (-6,-2,3); p on a grid of "
+            "consecutive doubles around (0.5,0.5,0.5)",
+            "+-0", "+-0");
+  w.block("p = (0.5 + x u, 0.5 + y u, 0.5), u = 2^-53, x, y in -128..127 with (x + 7y) % 96 == 0");
+  for (int x = -128; x < 128; ++x)
+    for (int y = -128; y < 128; ++y)
+      if (on_sublattice(x, y, 96))
+        emit(w, k, {9.5, 3.5, 6.5, 2.5, 10.5, 6.5, 2.5, 3.5, 13.5, -3.5, 1.5, 9.5, 0.5 + x * kUlpAtHalf,
+                    0.5 + y * kUlpAtHalf, 0.5});
+  w.block("p = (0.5, 0.5 + x u, 0.5 + y u), u = 2^-53, x, y in -128..127 with (x + 7y) % 96 == 0");
+  for (int x = -128; x < 128; ++x)
+    for (int y = -128; y < 128; ++y)
+      if (on_sublattice(x, y, 96))
+        emit(w, k, {9.5, 3.5, 6.5, 2.5, 10.5, 6.5, 2.5, 3.5, 13.5, -3.5, 1.5, 9.5, 0.5, 0.5 + x * kUlpAtHalf,
+                    0.5 + y * kUlpAtHalf});
 }
 
 }  // namespace fixtures

@@ -40,27 +40,6 @@ inline bool qzero(const QV& a) { return sgn(a[0]) == 0 && sgn(a[1]) == 0 && sgn(
 inline Q to_q(const CGAL::Exact_rational& x) { return Q(x.backend().data()); }
 inline CGAL::Exact_rational Rq(double x) { return CGAL::Exact_rational(x); }
 
-// Double-precision vector helpers, for building inputs (rounding allowed
-// there: the answers are computed from whatever doubles result).
-inline P3 padd(const P3& a, const P3& b) { return P3{a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline P3 psub(const P3& a, const P3& b) { return P3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline P3 pmul(const P3& a, double s) { return P3{a[0] * s, a[1] * s, a[2] * s}; }
-inline double pdot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline P3 pcross(const P3& a, const P3& b) {
-  return P3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline P3 pnormalize(const P3& a) { return pmul(a, 1.0 / std::sqrt(pdot(a, a))); }
-
-// A direction uniform on the unit sphere (rejection sampling; sqrt and
-// division are correctly rounded, so this is deterministic).
-inline P3 unit_dir(Rng& r) {
-  for (;;) {
-    P3 v = uniform3(r, 0);
-    double n2 = pdot(v, v);
-    if (n2 > 0.01 && n2 <= 1) return pnormalize(v);
-  }
-}
-
 // A unit direction perpendicular to the unit vector u (up to rounding).
 inline P3 perp_dir(Rng& r, const P3& u) {
   for (;;) {
@@ -70,8 +49,6 @@ inline P3 perp_dir(Rng& r, const P3& u) {
   }
 }
 
-// A non-power-of-two factor in [2^lo, 2^(hi+1)).
-inline double length_factor(Rng& r, int lo, int hi) { return std::ldexp(1.0 + r.unit(), int(r.range(lo, hi))); }
 
 inline I3 cross3(const I3& a, const I3& b) {
   return I3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
