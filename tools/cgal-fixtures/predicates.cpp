@@ -835,6 +835,15 @@ void float_points_section(Writer& w, const SignKind& k, int dim, int npoints, in
   }
 }
 
+// The sections of incircle (dim 2) and insphere (dim 3): dim + 2 points,
+// the lifted determinant's terms of degree dim + 2.
+void lifted_kind_sections(Writer& w, const SignKind& k, int dim, const Counts& c, int n_lifted, int n_float) {
+  size_t ncoords = size_t(dim * (dim + 2));
+  common_sections(w, k, ncoords, c);
+  lifted_sections(w, k, ncoords, dim + 2, n_lifted);
+  float_points_section(w, k, dim, dim + 2, n_float);
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -906,9 +915,7 @@ void gen_plane_side(Writer& w) {
 
 void gen_incircle(Writer& w) {
   const SignKind& k = kIncircle;
-  common_sections(w, k, 8, Counts{250, 150, 35, 50, 100, 100, 140});
-  lifted_sections(w, k, 8, 4, 100);
-  float_points_section(w, k, 2, 4, 80);
+  lifted_kind_sections(w, k, 2, Counts{250, 150, 35, 50, 100, 100, 140}, 100, 80);
 
   w.section("classroom",
             "Kettner et al.'s grid against a circle: incircle((8.5,4.5), (3.5,9.5), (0.5,8.5), p), the circle of "
@@ -923,27 +930,26 @@ void gen_incircle(Writer& w) {
 
 void gen_insphere(Writer& w) {
   const SignKind& k = kInsphere;
-  common_sections(w, k, 15, Counts{200, 150, 30, 40, 80, 80, 110});
-  lifted_sections(w, k, 15, 5, 80);
-  float_points_section(w, k, 3, 5, 60);
+  lifted_kind_sections(w, k, 3, Counts{200, 150, 30, 40, 80, 80, 110}, 80, 60);
 
   w.section("classroom",
             "Kettner et al.'s grid against a sphere: the sphere of radius 7 around (2.5,3.5,6.5) through "
             "(0.5,0.5,0.5), through a = c + 7 e1, b = c + 7 e2, c + 7 e3 and c + (-6,-2,3); p on a grid of "
             "consecutive doubles around (0.5,0.5,0.5)",
             "+-0", "+-0");
-  w.block("p = (0.5 + x u, 0.5 + y u, 0.5), u = 2^-53, x, y in -128..127 with (x + 7y) % 96 == 0");
-  for (int x = -128; x < 128; ++x)
-    for (int y = -128; y < 128; ++y)
-      if (on_sublattice(x, y, 96))
-        emit(w, k, {9.5, 3.5, 6.5, 2.5, 10.5, 6.5, 2.5, 3.5, 13.5, -3.5, 1.5, 9.5, 0.5 + x * kUlpAtHalf,
-                    0.5 + y * kUlpAtHalf, 0.5});
-  w.block("p = (0.5, 0.5 + x u, 0.5 + y u), u = 2^-53, x, y in -128..127 with (x + 7y) % 96 == 0");
-  for (int x = -128; x < 128; ++x)
-    for (int y = -128; y < 128; ++y)
-      if (on_sublattice(x, y, 96))
-        emit(w, k, {9.5, 3.5, 6.5, 2.5, 10.5, 6.5, 2.5, 3.5, 13.5, -3.5, 1.5, 9.5, 0.5, 0.5 + x * kUlpAtHalf,
-                    0.5 + y * kUlpAtHalf});
+  // p varies in axes (i, j) of (0.5, 0.5, 0.5).
+  for (auto [i, j, label] : {std::tuple<int, int, const char*>{0, 1, "p = (0.5 + x u, 0.5 + y u, 0.5)"},
+                             {1, 2, "p = (0.5, 0.5 + x u, 0.5 + y u)"}}) {
+    w.block(std::string(label) + ", u = 2^-53, x, y in -128..127 with (x + 7y) % 96 == 0");
+    for (int x = -128; x < 128; ++x)
+      for (int y = -128; y < 128; ++y) {
+        if (!on_sublattice(x, y, 96)) continue;
+        Case v = {9.5, 3.5, 6.5, 2.5, 10.5, 6.5, 2.5, 3.5, 13.5, -3.5, 1.5, 9.5, 0.5, 0.5, 0.5};
+        v[12 + i] += x * kUlpAtHalf;
+        v[12 + j] += y * kUlpAtHalf;
+        emit(w, k, v);
+      }
+  }
 }
 
 }  // namespace fixtures

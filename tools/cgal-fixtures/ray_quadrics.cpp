@@ -770,6 +770,16 @@ Case quadric_degree_one(Rng& r, bool paraboloid) {
   return quadric_case(o, lattice3(mul3(f.dir(V), odd), int(r.range(-4, 4))), coef);
 }
 
+// The quadric y in a random frame and scale, and the line through the
+// y-space point P + S V (|S| <= 2^16) along V 2^[-4,4], or an empty case.
+Case line_in_frame(Rng& r, const YQuadric& y, const I3& P, const I3& V) {
+  Frame f(r);
+  Case coef;
+  if (!place(r, y, f, coef)) return {};
+  P3 o = f.point(add3(P, mul3(V, r.range(-(1 << 16), 1 << 16))));
+  return quadric_case(o, lattice3(f.dir(V), int(r.range(-4, 4))), coef);
+}
+
 // A line P + S V lying on the quadric: a cone's ruling through its apex, a
 // ruling of a hyperboloid of one sheet or of a hyperbolic paraboloid, a line
 // in one plane of a plane pair, a line of a cylinder along its axis.
@@ -817,11 +827,7 @@ Case quadric_line_on(Rng& r) {
       V = {0, 0, r.range(1, 3) * r.sign()};
     }
   }
-  Frame f(r);
-  Case coef;
-  if (!place(r, y, f, coef)) return {};
-  P3 o = f.point(add3(P, mul3(V, r.range(-(1 << 16), 1 << 16))));
-  return quadric_case(o, lattice3(f.dir(V), int(r.range(-4, 4))), coef);
+  return line_in_frame(r, y, P, V);
 }
 
 // Degree zero off the surface: a cylinder or a pair of parallel planes along
@@ -862,11 +868,7 @@ Case quadric_plane(Rng& r, int mode, bool twice) {
     while (zero3(V));
   }
   if (mode == 1) P[0] += r.range(1, 3) * r.sign();
-  Frame f(r);
-  Case coef;
-  if (!place(r, y, f, coef)) return {};
-  P3 o = f.point(add3(P, mul3(V, r.range(-(1 << 16), 1 << 16))));
-  return quadric_case(o, lattice3(f.dir(V), int(r.range(-4, 4))), coef);
+  return line_in_frame(r, y, P, V);
 }
 
 // The all-zero quadric (every coefficient 0, 30% of them written -0): every
