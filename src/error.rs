@@ -29,7 +29,7 @@ pub enum InputError {
     /// A ray's direction is the zero vector.
     ZeroDirection,
     /// A shape parameter that makes the shape degenerate: a zero axis or
-    /// normal, all-zero quadric coefficients, a zero cone radius.
+    /// normal, a zero cone radius.
     Degenerate {
         /// The parameter name of the offending argument.
         argument: &'static str,

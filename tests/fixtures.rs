@@ -94,6 +94,18 @@ const KINDS: &[Kind] = &[
         oracle: Some(PerLine(oracle_plane_side)),
     },
     Kind {
+        name: "incircle",
+        min_fields: 9,
+        predicate: Some(PerLine(crate_incircle)),
+        oracle: Some(PerLine(oracle_incircle)),
+    },
+    Kind {
+        name: "insphere",
+        min_fields: 16,
+        predicate: Some(PerLine(crate_insphere)),
+        oracle: Some(PerLine(oracle_insphere)),
+    },
+    Kind {
         name: "ray_sphere",
         min_fields: 11,
         predicate: Some(PerLine(crate_ray_sphere)),
@@ -184,47 +196,75 @@ fn compare_signs(expected: i8, got: i8) -> Verdict {
 // ---------------------------------------------------------------------------
 // Checkers
 
+/// A sign line of `N` coordinates against `sign(coordinates)`.
+fn check_sign<const N: usize>(
+    f: &[&str],
+    sign: impl Fn(&[f64; N]) -> i8,
+) -> Result<Verdict, String> {
+    let (v, want) = parse_sign_case::<N>(f)?;
+    Ok(compare_signs(want, sign(&v)))
+}
+
 fn crate_orient2d(f: &[&str]) -> Result<Verdict, String> {
-    let (v, want) = parse_sign_case::<6>(f)?;
-    Ok(compare_signs(
-        want,
-        exactray::predicates::orient2d(p2(&v, 0), p2(&v, 1), p2(&v, 2)).as_i8(),
-    ))
+    check_sign::<6>(f, |v| {
+        exactray::predicates::orient2d(p2(v, 0), p2(v, 1), p2(v, 2)).as_i8()
+    })
 }
 
 fn oracle_orient2d(f: &[&str]) -> Result<Verdict, String> {
-    let (v, want) = parse_sign_case::<6>(f)?;
-    Ok(compare_signs(
-        want,
-        oracle::orient2d(p2(&v, 0), p2(&v, 1), p2(&v, 2)),
-    ))
+    check_sign::<6>(f, |v| oracle::orient2d(p2(v, 0), p2(v, 1), p2(v, 2)))
 }
 
 fn crate_orient3d(f: &[&str]) -> Result<Verdict, String> {
-    let (v, want) = parse_sign_case::<12>(f)?;
-    let got = exactray::predicates::orient3d(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3));
-    Ok(compare_signs(want, got.as_i8()))
+    check_sign::<12>(f, |v| {
+        exactray::predicates::orient3d(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3)).as_i8()
+    })
 }
 
 fn oracle_orient3d(f: &[&str]) -> Result<Verdict, String> {
-    let (v, want) = parse_sign_case::<12>(f)?;
-    Ok(compare_signs(
-        want,
-        oracle::orient3d(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3)),
-    ))
+    check_sign::<12>(f, |v| {
+        oracle::orient3d(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3))
+    })
 }
 
 fn crate_plane_side(f: &[&str]) -> Result<Verdict, String> {
-    let (v, want) = parse_sign_case::<15>(f)?;
-    let got =
-        exactray::predicates::same_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
-    Ok(compare_signs(want, got.as_i8()))
+    check_sign::<15>(f, |v| {
+        exactray::predicates::same_side(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3), p3(v, 4)).as_i8()
+    })
 }
 
 fn oracle_plane_side(f: &[&str]) -> Result<Verdict, String> {
-    let (v, want) = parse_sign_case::<15>(f)?;
-    let got = oracle::plane_side(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), p3(&v, 4));
-    Ok(compare_signs(want, got))
+    check_sign::<15>(f, |v| {
+        oracle::plane_side(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3), p3(v, 4))
+    })
+}
+
+/// incircle: the crate and CGAL's `side_of_oriented_circle` share the sign
+/// convention (positive inside a counterclockwise circle).
+fn crate_incircle(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<8>(f, |v| {
+        exactray::predicates::incircle(p2(v, 0), p2(v, 1), p2(v, 2), p2(v, 3)).as_i8()
+    })
+}
+
+fn oracle_incircle(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<8>(f, |v| {
+        oracle::incircle(p2(v, 0), p2(v, 1), p2(v, 2), p2(v, 3))
+    })
+}
+
+/// insphere: the crate documents CGAL's `side_of_oriented_sphere` sign
+/// (the opposite of Shewchuk's), which the fixtures hold; no conversion.
+fn crate_insphere(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<15>(f, |v| {
+        exactray::predicates::insphere(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3), p3(v, 4)).as_i8()
+    })
+}
+
+fn oracle_insphere(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<15>(f, |v| {
+        oracle::insphere(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3), p3(v, 4))
+    })
 }
 
 // ---------------------------------------------------------------------------

@@ -140,7 +140,7 @@ fn cylinder_case(
 }
 
 fn quadric_case(o: [f64; 3], d: [f64; 3], k: [f64; 10]) -> Result<(), TestCaseError> {
-    prop_assume!(d != [0.0; 3] && k.iter().any(|&v| v != 0.0));
+    prop_assume!(d != [0.0; 3]);
     let q = Quadric::new(k).unwrap();
     let ray = Ray::new(o, d).unwrap();
     let want = Quadratic::quadric(o, d, k).answer();
@@ -365,12 +365,10 @@ fn constructors_reject_bad_input() {
         Cone::infinite([0.0; 3], [0.0, nan, 1.0], 1.0),
         Err(InputError::NonFinite { argument: "axis" })
     );
-    assert_eq!(
-        Quadric::new([0.0; 10]),
-        Err(InputError::Degenerate {
-            argument: "coefficients"
-        })
-    );
+    // All-zero coefficients are the quadric every point lies on, not an
+    // error (see `all_zero_quadric_holds_every_line`).
+    assert!(Quadric::new([0.0; 10]).is_ok());
+    assert!(Quadric::new([-0.0; 10]).is_ok());
     let mut k = [1.0; 10];
     k[9] = nan;
     assert_eq!(
@@ -387,6 +385,95 @@ fn constructors_reject_bad_input() {
         Disk::new([0.0; 3], [0.0, 0.0, 1.0], nan),
         Err(InputError::InvalidRadius { argument: "radius" })
     );
+}
+
+/// Where the surface has no normal (a point sphere), a cast's normal is the
+/// reversed ray direction, a unit vector even when the direction's squared
+/// length underflows or overflows.
+#[test]
+fn fallback_normals_are_unit_for_tiny_and_huge_directions() {
+    let point = Sphere::new([0.0; 3], 0.0).unwrap();
+    for (o, d) in [
+        ([-1e-310, 0.0, 0.0], [5e-324, 0.0, 0.0]),
+        ([-f64::MAX, 0.0, 0.0], [f64::MAX, 0.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+    ] {
+        let ray = Ray::new(o, d).unwrap();
+        let hit = point.cast(&ray, Interval::FORWARD).unwrap();
+        assert_eq!(hit.normal.to_array(), [-1.0, 0.0, 0.0], "{ray:?}");
+    }
+}
+
+/// All ten coefficients zero: every line lies on the quadric. `line_roots`
+/// is `Roots::All` (the oracle's identically zero polynomial), and a cast
+/// behaves as for a line lying on any surface (here a ruling of the cone
+/// `x^2 + y^2 = z^2` through its apex): the point of the range nearest
+/// `t = 0`, with the reversed ray direction as normal (the gradient is zero).
+#[test]
+fn all_zero_quadric_holds_every_line() {
+    let mut signed_zeros = [0.0; 10];
+    signed_zeros[3] = -0.0;
+    signed_zeros[9] = -0.0;
+    let cone = Quadric::new([1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    let ruling = Ray::new([0.0; 3], [3.0, 4.0, 5.0]).unwrap();
+    let rays = [
+        ruling,
+        Ray::new([1.0, -2.0, 0.5], [0.25, 3.0, -1.0]).unwrap(),
+        Ray::new([1e300, -1e-300, 0.0], [5e-324, 0.0, -1e-310]).unwrap(),
+        Ray::new([-f64::MAX, 0.0, f64::MAX], [f64::MAX, -f64::MAX, 1.0]).unwrap(),
+    ];
+    let ranges = [
+        (Interval::FORWARD, Some(0.0)),
+        (
+            Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap(),
+            Some(0.0),
+        ),
+        (Interval::new(2.0, 3.0).unwrap(), Some(2.0)),
+        (Interval::new(-5.0, -1.0).unwrap(), Some(-1.0)),
+        (
+            Interval::new(f64::NEG_INFINITY, -1e308).unwrap(),
+            Some(-1e308),
+        ),
+        (Interval::new(f64::INFINITY, f64::INFINITY).unwrap(), None),
+    ];
+    for k in [[0.0; 10], signed_zeros] {
+        let q = Quadric::new(k).unwrap();
+        for ray in &rays {
+            let (o, d) = (ray.origin().to_array(), ray.direction().to_array());
+            assert_eq!(q.line_roots(ray), Roots::All, "{ray:?}");
+            assert_eq!(Quadratic::quadric(o, d, k).answer().count, None);
+            for (range, want) in ranges {
+                assert_eq!(q.cast_t(ray, range), want, "{ray:?} in {range:?}");
+                assert_eq!(q.hits(ray, range), want.is_some());
+                let hit = q.cast(ray, range);
+                assert_eq!(hit.map(|h| h.t), want);
+                if let Some(h) = hit {
+                    assert_eq!(h.point, ray.at(h.t));
+                    // Exactly -d / |d| for these directions (after scaling by a
+                    // power of two where |d|^2 would underflow or overflow).
+                    let d = -ray.direction();
+                    let m = d.abs().max_element();
+                    let k = if m < 1e-100 {
+                        2f64.powi(1000)
+                    } else if m > 1e100 {
+                        2f64.powi(-1000)
+                    } else {
+                        1.0
+                    };
+                    assert_eq!(h.normal, (d * k).normalize());
+                }
+            }
+        }
+    }
+    // The same ranges on a line lying on a non-zero quadric.
+    assert_eq!(cone.line_roots(&ruling), Roots::All);
+    for (range, want) in ranges {
+        assert_eq!(
+            cone.cast_t(&ruling, range),
+            want,
+            "cone ruling in {range:?}"
+        );
+    }
 }
 
 #[test]

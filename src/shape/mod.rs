@@ -1,6 +1,6 @@
 //! Shapes, by what they are: each type validates itself at construction
 //! (typed [`InputError`]s for non-finite coordinates, negative or NaN
-//! radii, zero axes or normals, degenerate cones and quadrics), so every
+//! radii, zero axes or normals, degenerate cones), so every
 //! query on it can rely on finite, meaningful parameters. What can be asked
 //! of a shape lives in [`query`](crate::query).
 

@@ -4,7 +4,15 @@ use glam::DVec3;
 /// The quadric surface
 /// `A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0`,
 /// from its ten coefficients `[A, B, C, D, E, F, G, H, I, J]`. Its normal
-/// at a point is the normalized gradient.
+/// at a point is the normalized gradient; where the gradient vanishes (a
+/// cone's apex, every point of the all-zero quadric) a cast's normal is the
+/// reversed ray direction.
+///
+/// All ten coefficients zero is a valid quadric: every point satisfies its
+/// equation, so every line lies on it, as a ruling lies on a cone.
+/// [`line_roots`](Quadric::line_roots) gives [`Roots::All`](crate::roots::Roots::All)
+/// for every ray, and a cast hits at the point of its range nearest
+/// `t = 0`, as for any line on a surface.
 ///
 /// ```
 /// use exactray::shape::Quadric;
@@ -17,6 +25,12 @@ use glam::DVec3;
 /// let down = Ray::new([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]).unwrap();
 /// assert_eq!(bowl.line_roots(&down), Roots::One(4.0));
 /// assert_eq!(bowl.cast(&down, Interval::FORWARD).unwrap().point.to_array(), [1.0, 0.0, 1.0]);
+///
+/// // All-zero coefficients: every line lies on the "surface".
+/// let everything = Quadric::new([0.0; 10]).unwrap();
+/// assert_eq!(everything.line_roots(&down), Roots::All);
+/// let hit = everything.cast(&down, Interval::new(2.0, 3.0).unwrap()).unwrap();
+/// assert_eq!((hit.t, hit.normal.to_array()), (2.0, [0.0, 0.0, 1.0]));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quadric {
@@ -25,15 +39,13 @@ pub struct Quadric {
 
 impl Quadric {
     /// A quadric. Errors: [`InputError::NonFinite`] naming `"coefficients"`
-    /// for a NaN or infinite coefficient, [`InputError::Degenerate`] when
-    /// all are zero (every point would lie on it).
+    /// for a NaN or infinite coefficient. All-zero coefficients are
+    /// accepted: the quadric every point lies on (see [`Quadric`]).
     pub fn new(coefficients: [f64; 10]) -> Result<Quadric, InputError> {
-        let argument = "coefficients";
         if coefficients.iter().any(|v| !v.is_finite()) {
-            return Err(InputError::NonFinite { argument });
-        }
-        if coefficients.iter().all(|&v| v == 0.0) {
-            return Err(InputError::Degenerate { argument });
+            return Err(InputError::NonFinite {
+                argument: "coefficients",
+            });
         }
         Ok(Quadric { k: coefficients })
     }

@@ -279,70 +279,74 @@ impl Quadratic {
 
     /// The count and the correctly rounded roots (ties to even), found by
     /// bisection over the doubles on the monotone branch each root lies on.
+    /// The branches meet at the exact vertex `v = -b / 2a`, which is
+    /// compared exactly (by the sign of the slope `2 a t + b`) with every
+    /// point the bisection evaluates: two roots that are adjacent doubles,
+    /// or within an ulp of each other, are told apart however `v` rounds.
     /// A root beyond f64's range comes out as +-f64::MAX within
     /// [`SATURATED_ULPS`] ulps of it, and as an infinity of its sign (as
     /// the crate's casts return it) beyond.
     pub fn answer(&self) -> LineAnswer {
         let count = self.count();
+        let s = self.a.sign();
+        // The slope's sign times a's: the side of the vertex t lies on.
+        let side = |t: &Dyadic| s * self.slope_sign_at(t);
         let roots = match count {
-            Some(1) if self.a.sign() == 0 => {
-                vec![self.round_root(self.b.sign(), i64::MIN + 1, i64::MAX)]
+            Some(1) if s == 0 => {
+                let dir = self.b.sign();
+                vec![self.round_change(|t| dir * self.sign_at(t))]
             }
-            Some(1) => vec![self.round_vertex()],
+            // A double root: the vertex itself.
+            Some(1) => vec![self.round_change(side)],
             Some(2) => {
-                // Left of the vertex the polynomial runs against sign(a).
-                let v = ordered(self.round_vertex());
-                let s = self.a.sign();
-                vec![
-                    self.round_root(-s, ordered(-f64::MAX), v),
-                    self.round_root(s, v, ordered(f64::MAX)),
-                ]
+                // Left of the lower root p has a's sign, between the roots
+                // the opposite one; each root's step function is constant
+                // on the far side of the vertex.
+                let lower = |t: &Dyadic| {
+                    if side(t) >= 0 {
+                        1
+                    } else {
+                        -s * self.sign_at(t)
+                    }
+                };
+                let upper = |t: &Dyadic| {
+                    if side(t) <= 0 {
+                        -1
+                    } else {
+                        s * self.sign_at(t)
+                    }
+                };
+                vec![self.round_change(lower), self.round_change(upper)]
             }
             _ => vec![],
         };
         LineAnswer { count, roots }
     }
 
-    /// `-b / 2a` rounded correctly: the double nearest it is found by
-    /// bisection on the sign of the slope `2 a t + b`.
-    fn round_vertex(&self) -> f64 {
-        // The slope is monotone increasing in t for a > 0 (decreasing else).
-        let s = self.a.sign();
-        self.bisect(
-            |t| s * self.slope_sign_at(t),
-            ordered(-f64::MAX),
-            ordered(f64::MAX),
-        )
-    }
-
-    /// The root on a branch where `sign(p(t)) * dir` increases with `t`,
-    /// within ordered bounds `[lo, hi]`.
-    /// A root beyond +-f64::MAX: +-f64::MAX (saturated) within
-    /// [`SATURATED_ULPS`] ulps of it, where a cast's rounded root may still
-    /// be finite; an infinity beyond that, where no root within a few ulps
-    /// is finite.
-    fn round_root(&self, dir: i8, lo: i64, hi: i64) -> f64 {
-        let lo = lo.max(ordered(-f64::MAX));
-        let hi = hi.min(ordered(f64::MAX));
-        let f = |t: &Dyadic| dir * self.sign_at(t);
+    /// The double nearest the point where the monotone step function `f`
+    /// (-1 below, +1 above, 0 at) changes. Beyond +-f64::MAX: +-f64::MAX
+    /// (saturated) within [`SATURATED_ULPS`] ulps of it, where a cast's
+    /// rounded root may still be finite; an infinity of its sign beyond
+    /// that, where no root within a few ulps is finite.
+    fn round_change(&self, f: impl Fn(&Dyadic) -> i8) -> f64 {
         // (2^53 - 1 + SATURATED_ULPS) 2^971, exactly.
         let edge = Dyadic::from_f64(f64::MAX)
             .add(&Dyadic::from_f64(2f64.powi(971)).mul(&Dyadic::int(SATURATED_ULPS)));
-        if hi == ordered(f64::MAX) && f(&Dyadic::from_f64(f64::MAX)) < 0 {
+        if f(&Dyadic::from_f64(f64::MAX)) < 0 {
             return if f(&edge) < 0 {
                 f64::INFINITY
             } else {
                 f64::MAX
             };
         }
-        if lo == ordered(-f64::MAX) && f(&Dyadic::from_f64(-f64::MAX)) > 0 {
+        if f(&Dyadic::from_f64(-f64::MAX)) > 0 {
             return if f(&edge.neg()) > 0 {
                 f64::NEG_INFINITY
             } else {
                 -f64::MAX
             };
         }
-        self.bisect(f, lo, hi)
+        self.bisect(f, ordered(-f64::MAX), ordered(f64::MAX))
     }
 
     /// The double nearest the point where the monotone step function

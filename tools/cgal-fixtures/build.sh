@@ -1,6 +1,8 @@
 #!/bin/sh
 # Builds the CGAL fixture generator into tools/cgal-fixtures/build/.
 # Installs CGAL (header-only; pulls in GMP and MPFR) with apt if missing.
+# Each family is its own translation unit (see generate.cpp); a unit is
+# recompiled when it or one of the headers is newer than its object.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 
@@ -17,5 +19,19 @@ mkdir -p "$here/build"
 # -ffp-contract=off: no fused multiply-add, so the plain-f64 statistics the
 # generator prints are the same on every machine (the fixtures never depend
 # on them).
-g++ -std=c++17 -O2 -frounding-math -ffp-contract=off -Wall -Wextra \
-    -o "$here/build/generate" "$here/generate.cpp" -lmpfr -lgmpxx -lgmp
+flags="-std=c++17 -O2 -frounding-math -ffp-contract=off -Wall -Wextra"
+objects=""
+for unit in generate predicates nearest ray_quadrics ray_triangle; do
+    src="$here/$unit.cpp"
+    obj="$here/build/$unit.o"
+    stale=0
+    [ -f "$obj" ] || stale=1
+    for dep in "$src" "$here"/*.h "$here/build.sh"; do
+        [ "$dep" -nt "$obj" ] && stale=1
+    done
+    if [ $stale -eq 1 ]; then
+        g++ $flags -c -o "$obj" "$src"
+    fi
+    objects="$objects $obj"
+done
+g++ -o "$here/build/generate" $objects -lmpfr -lgmpxx -lgmp

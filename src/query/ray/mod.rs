@@ -11,6 +11,7 @@
 //! stated error of `f64::MAX` may go either way. `line_roots`, which
 //! reports the whole line, returns such roots as infinities of their sign.
 
+use crate::arith::exponent::unit_pow2;
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -200,15 +201,31 @@ pub(crate) fn hit_at(
     })
 }
 
-/// `v` normalized, or `fallback` normalized when `v` is zero or too small
-/// to normalize (a point sphere, a cone's apex).
+/// `v` normalized, or `fallback` normalized when `v` is zero (a point
+/// sphere, a cone's apex, the all-zero quadric). A vector whose squared
+/// length underflows or overflows (a subnormal ray direction, a huge
+/// gradient) is first scaled by a power of two, exactly, so any nonzero
+/// finite `v` or `fallback` gives a unit vector.
 #[inline]
 pub(crate) fn unit_or(v: DVec3, fallback: DVec3) -> DVec3 {
     let n = v.normalize_or_zero();
-    if n == DVec3::ZERO {
-        fallback.normalize_or_zero()
-    } else {
+    if n != DVec3::ZERO {
+        return n;
+    }
+    // The cold path: rescaled, then the fallback likewise.
+    let rescaled = |w: DVec3| {
+        let m = w.abs().max_element();
+        if m > 0.0 {
+            (w * unit_pow2(m)).normalize_or_zero()
+        } else {
+            DVec3::ZERO
+        }
+    };
+    let n = rescaled(v);
+    if n != DVec3::ZERO {
         n
+    } else {
+        rescaled(fallback)
     }
 }
 

@@ -28,8 +28,9 @@ const W6: usize = 2 * W3;
 impl Quadric {
     /// Every real root in `t` of the quadric's equation at `o + t d`, over
     /// the whole line, sorted. The count is exact (a zero leading
-    /// coefficient gives the linear root; an identically zero polynomial
-    /// gives [`Roots::All`]); roots carry the accuracy of
+    /// coefficient gives the linear root; an identically zero polynomial,
+    /// as for a line on the quadric and for every line with all ten
+    /// coefficients zero, gives [`Roots::All`]); roots carry the accuracy of
     /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
     pub fn line_roots(&self, ray: &Ray) -> Roots {
         self.solve(ray, AllRoots)
@@ -266,6 +267,10 @@ fn exact_in<const N1: usize, const N2: usize, const N3: usize, const N6: usize>(
 impl RayCast for Quadric {
     /// The first hit in `range`; the normal is the normalized gradient
     /// (against the ray where the gradient vanishes, as at a cone's apex).
+    /// A line on the quadric (every line, for all-zero coefficients) hits
+    /// at the point of `range` nearest `t = 0`; with all-zero coefficients
+    /// the gradient is zero everywhere, so the normal is the reversed ray
+    /// direction, normalized.
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         hit_at(self.cast_t(ray, range), ray, |point| {
@@ -273,6 +278,9 @@ impl RayCast for Quadric {
         })
     }
 
+    /// The `t` of [`RayCast::cast`]'s hit: for a line on the quadric (every
+    /// line, for all-zero coefficients) the point of `range` nearest
+    /// `t = 0`.
     #[inline]
     fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
         self.solve(ray, FirstIn(range))
