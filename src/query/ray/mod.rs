@@ -20,7 +20,9 @@ use glam::DVec3;
 
 mod triangle;
 
-pub use triangle::{EXACT_T_ULPS, TriangleHit};
+pub use triangle::{
+    EXACT_T_ULPS, Exact, MollerTrumbore, TriangleHit, TriangleTest, Watertight, WatertightRay,
+};
 
 /// The half-line (or line) `origin + t * direction`. The direction need not
 /// be unit length: queries report `t` in units of it, and their exactness

@@ -34,9 +34,12 @@ use crate::query::ray::Ray;
 use plane_parameter::plane_parameter;
 
 mod plane_parameter;
+mod variant;
+
 use crate::shape::Triangle;
 use crate::sign::Sign;
 use glam::DVec3;
+pub use variant::{Exact, MollerTrumbore, TriangleTest, Watertight, WatertightRay};
 
 /// Where a ray meets a triangle: the ray parameter and the barycentric
 /// coordinates of the hit point.
@@ -412,7 +415,7 @@ fn barycentrics(w: [f64; 3], s: [Sign; 3], side: f64) -> (f64, f64) {
 /// scaled by a power of two and permuted so that its largest coordinate
 /// comes last.
 #[derive(Clone, Copy, Debug)]
-struct Shear {
+pub(super) struct Shear {
     origin: DVec3,
     /// The axis of the direction's largest coordinate, `kz`; the others
     /// follow cyclically (`kx = kz + 1`, `ky = kz + 2`, modulo 3).
@@ -436,7 +439,7 @@ fn permute<const K: usize>(p: DVec3) -> [f64; 3] {
 
 impl Shear {
     #[inline(always)]
-    fn of(ray: &Ray) -> Shear {
+    pub(super) fn of(ray: &Ray) -> Shear {
         let d = ray.direction();
         let a = d.abs();
         let kz = if a.x >= a.y {
@@ -464,7 +467,7 @@ impl Shear {
     }
 
     #[inline(always)]
-    fn cast(&self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
+    pub(super) fn cast(&self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
         match self.kz {
             0 => self.cast_permuted::<0>(tri, range),
             1 => self.cast_permuted::<1>(tri, range),
