@@ -6,12 +6,6 @@
 //! (`examples/report/nearest.rs`), so both measure the same code the same
 //! way; query times are per query, build times per index.
 
-// Clippy builds benches with cfg(test) but no test harness, which drops the
-// oracle's self-test functions and leaves their `use` unused.
-#[allow(unused_imports)]
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
 #[allow(dead_code)]
 #[path = "../examples/report/framework.rs"]
 mod framework;

@@ -5,12 +5,6 @@
 //! (`examples/report/`), so both measure the same code the same way; times
 //! are per operation.
 
-// Clippy builds benches with cfg(test) but no test harness, which drops the
-// oracle's self-test functions and leaves their `use` unused.
-#[allow(unused_imports)]
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
 #[allow(dead_code)]
 #[path = "../examples/report/framework.rs"]
 mod framework;

@@ -13,9 +13,6 @@
 //! `queries_kiddo`), so that callgrind's per-function inclusive counts
 //! divided by Q give instructions per query.
 
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
 #[allow(dead_code)]
 #[path = "report/framework.rs"]
 mod framework;

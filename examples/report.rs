@@ -12,11 +12,6 @@
 //! [`FAMILIES`]. (A crate root looks for its modules beside itself, hence the
 //! `#[path]`s.)
 
-#[path = "../tests/common/line_oracle.rs"]
-mod line_oracle;
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
 #[path = "report/framework.rs"]
 mod framework;
 #[path = "report/heap.rs"]

@@ -1,19 +1,17 @@
 //! Rays against spheres, cylinders, cones and general quadrics, checked
-//! against the exact oracle (`common/line_oracle.rs`): the root count must
+//! against the exact oracle (`exactray_oracle::line_oracle`): the root count must
 //! be exact and every root within the stated ulps of the correctly rounded
 //! exact root, on ordinary rays and on the hard ones (far origins, grazing
 //! and exactly tangent rays, origins on the surface, tiny and huge scales,
 //! unnormalized directions).
 
-mod common;
-
-use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use exactray::InputError;
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::roots::Roots;
 use exactray::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
+use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use proptest::prelude::*;
 
 /// The tolerance the issue sets against the correctly rounded root.

@@ -7,7 +7,6 @@
 
 mod common;
 
-use common::oracle;
 use common::ray_cases::{self, Case, TiledMesh};
 use exactray::interval::Interval;
 use exactray::query::ray::EXACT_T_ULPS;
@@ -15,6 +14,7 @@ use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Triangle;
 use exactray::testing::{SplitMix64, step_ulps};
+use exactray_oracle::oracle;
 use glam::DVec3;
 use proptest::prelude::*;
 

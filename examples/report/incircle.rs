@@ -2,9 +2,9 @@
 //! `a, b, c` (the same convention as Shewchuk's).
 
 use crate::framework::method;
-use crate::oracle;
 use crate::signs::{SignFamily, coord, sign_of};
 use exactray::testing::incircle_case;
+use exactray_oracle::oracle;
 use glam::DVec2;
 
 type Case = [DVec2; 4];

@@ -3,9 +3,9 @@
 //! so the Shewchuk ports are negated).
 
 use crate::framework::method;
-use crate::oracle;
 use crate::signs::{SignFamily, coord3, minus_sign_of};
 use exactray::testing::insphere_case;
+use exactray_oracle::oracle;
 use glam::DVec3;
 
 type Case = [DVec3; 5];

@@ -14,10 +14,10 @@
 //! `benches/nearest.rs`.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
-use crate::oracle;
 use exactray::bvh::SphereBvh;
 use exactray::bvh::{Nearest, QueryStats};
 use exactray::testing::SplitMix64;
+use exactray_oracle::oracle;
 use glam::DVec3;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use rstar::RTree;

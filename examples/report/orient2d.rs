@@ -1,9 +1,9 @@
 //! orient2d: the sign of `(b - a) x (c - a)`, positive counterclockwise.
 
 use crate::framework::method;
-use crate::oracle;
 use crate::signs::{SignFamily, batch, coord, sign_of};
 use exactray::testing::orient2d_case;
+use exactray_oracle::oracle;
 use glam::DVec2;
 
 type Case = [DVec2; 3];

@@ -2,9 +2,9 @@
 //! minus Shewchuk's, so the Shewchuk ports are negated).
 
 use crate::framework::method;
-use crate::oracle;
 use crate::signs::{SignFamily, batch, coord3, minus_sign_of, sign_of};
 use exactray::testing::orient3d_case;
+use exactray_oracle::oracle;
 use glam::DVec3;
 
 type Case = [DVec3; 4];

@@ -3,10 +3,10 @@
 //! answer it with two orient3d calls, as a user of them would.
 
 use crate::framework::method;
-use crate::oracle;
 use crate::orient3d;
 use crate::signs::{NAN, SignFamily};
 use exactray::testing::plane_side_case;
+use exactray_oracle::oracle;
 use glam::DVec3;
 
 type Case = [DVec3; 5];

@@ -17,11 +17,11 @@
 //! theirs on both sides of it.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
-use crate::oracle;
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::raster::rasterize_triangle;
 use exactray::shape::Triangle;
+use exactray_oracle::oracle;
 use glam::{DVec2, DVec3};
 
 /// One triangle on a grid that holds it.

@@ -8,13 +8,13 @@
 //! within a few ulps of the rim or the apex are uncertain there.
 
 use crate::framework::method;
-use crate::line_oracle::Quadratic;
 use crate::ray_family::{RayFamily, cube, naive_first, parry_cast, uniform};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Cone;
 use exactray::testing::SplitMix64;
+use exactray_oracle::line_oracle::Quadratic;
 use glam::DVec3;
 
 #[derive(Clone)]

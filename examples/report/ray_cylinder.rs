@@ -4,13 +4,13 @@
 //! aimed at its middle meet its side; it runs only on y-axis inputs).
 
 use crate::framework::method;
-use crate::line_oracle::Quadratic;
 use crate::ray_family::{RayFamily, cube, first_forward, naive_first, parry_cast, uniform, unit};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Cylinder;
 use exactray::testing::SplitMix64;
+use exactray_oracle::line_oracle::Quadratic;
 use glam::DVec3;
 
 #[derive(Clone)]

@@ -5,8 +5,8 @@
 //! hit's `t` from the correctly rounded `t`, over the cases both call hits.
 
 use crate::framework::{Config, Measure, Row, median, note, time_methods};
-use crate::line_oracle::ulps_between;
 use exactray::testing::SplitMix64;
+use exactray_oracle::line_oracle::ulps_between;
 use std::fmt::Write;
 
 /// Draws one case of an input class.

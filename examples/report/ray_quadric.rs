@@ -3,13 +3,13 @@
 //! evaluated in f64 (`naive`); parry3d has no general quadric.
 
 use crate::framework::method;
-use crate::line_oracle::Quadratic;
 use crate::ray_family::{RayFamily, cube, first_forward, naive_first, uniform};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Quadric;
 use exactray::testing::SplitMix64;
+use exactray_oracle::line_oracle::Quadratic;
 use glam::DVec3;
 
 #[derive(Clone)]

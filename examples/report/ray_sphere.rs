@@ -4,13 +4,13 @@
 //! the centre, the second root by Vieta) and parry3d's `Ball` (f64 build).
 
 use crate::framework::method;
-use crate::line_oracle::Quadratic;
 use crate::ray_family::{RayFamily, cube, first_forward, naive_first, parry_cast, uniform, unit};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Sphere;
 use exactray::testing::SplitMix64;
+use exactray_oracle::line_oracle::Quadratic;
 use glam::DVec3;
 
 #[derive(Clone)]

@@ -21,12 +21,12 @@
 //! per ray–triangle test there too.
 
 use crate::framework::{Config, Measure, Row, median, method, note, time_methods};
-use crate::oracle;
 use crate::ray_cases::{self, TiledMesh};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::shape::Triangle;
 use exactray::testing::SplitMix64;
+use exactray_oracle::oracle;
 use glam::DVec3;
 use parry3d_f64::math::Vector as PVector;
 use parry3d_f64::query::{Ray as PRay, RayCast as PRayCast};

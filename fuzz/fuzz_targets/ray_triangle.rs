@@ -19,11 +19,10 @@ use exactray::query::ray::Ray;
 use exactray::shape::Triangle;
 use exactray::testing::SplitMix64;
 use exactray::testing::finite_f64_from_bits;
+use exactray_oracle::oracle;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
 
-#[path = "../../tests/common/oracle.rs"]
-mod oracle;
 #[path = "../../tests/common/ray_cases.rs"]
 mod ray_cases;
 

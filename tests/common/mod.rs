@@ -1,3 +1,1 @@
-pub mod line_oracle;
-pub mod oracle;
 pub mod ray_cases;
