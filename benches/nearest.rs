@@ -17,7 +17,6 @@ mod nearest;
 mod output;
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
-use framework::Config;
 use nearest::{Dist, Indexes};
 use std::time::Duration;
 
@@ -28,12 +27,11 @@ const METHODS: [&str; 4] = ["exactray", "exactray-batch", "kiddo", "rstar"];
 const QUERIES: usize = 4096;
 
 fn queries(c: &mut Criterion) {
-    let cfg = Config::new(true);
     for n in NS {
         for dist in DISTS {
-            let ix = Indexes::build(nearest::points(&cfg, dist, n));
-            let qs = nearest::queries(&cfg, dist, n, QUERIES);
-            let mut group = c.benchmark_group(format!("nearest/{}", dist.inputs(n)));
+            let ix = Indexes::build(nearest::points(dist, n));
+            let qs = nearest::queries(dist, n, QUERIES);
+            let mut group = c.benchmark_group(format!("nearest/{}", nearest::inputs(dist, n)));
             for m in nearest::methods(&ix)
                 .iter()
                 .filter(|m| METHODS.contains(&m.name()))
@@ -54,10 +52,12 @@ fn queries(c: &mut Criterion) {
 }
 
 fn builds(c: &mut Criterion) {
-    let cfg = Config::new(true);
     for n in NS {
-        let points = nearest::points(&cfg, Dist::Uniform, n);
-        let mut group = c.benchmark_group(format!("nearest_build/{}", Dist::Uniform.inputs(n)));
+        let points = nearest::points(Dist::Uniform, n);
+        let mut group = c.benchmark_group(format!(
+            "nearest_build/{}",
+            nearest::inputs(Dist::Uniform, n)
+        ));
         let input = || points.as_slice();
         group.bench_function("exactray", |b| {
             b.iter_batched(input, nearest::exactray_build, BatchSize::PerIteration)

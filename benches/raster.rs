@@ -20,10 +20,10 @@ use std::time::Duration;
 fn triangles(c: &mut Criterion) {
     let cfg = Config::new(true);
     let methods = raster_triangle::methods();
-    for area in raster_triangle::SIZES {
+    for area in exactray::testing::RASTER_AREAS {
         let mut rng = cfg.rng("raster_triangle", &format!("pixels:{area}"));
         let cases: Vec<_> = (0..16)
-            .map(|_| raster_triangle::case(&mut rng, area))
+            .map(|_| exactray::testing::raster_triangle_case(&mut rng, area))
             .collect();
         let mut group = c.benchmark_group(format!("raster_triangle/pixels:{area}"));
         for m in &methods {

@@ -55,9 +55,8 @@ fn main() {
         .unwrap_or(1_000_000);
     let q = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(10_000);
     let which = args.get(3).map_or("both", String::as_str);
-    let cfg = framework::Config::new(true);
-    let points = nearest::points(&cfg, dist, n);
-    let qs = nearest::queries(&cfg, dist, n, q);
+    let points = nearest::points(dist, n);
+    let qs = nearest::queries(dist, n, q);
     if which == "time" {
         // Same-run ratios with the report's own methods (kiddo's answer
         // includes fetching its point, as exactray's does): the methods

@@ -43,8 +43,6 @@ mod orient3d;
 mod plane_side;
 #[path = "report/raster_triangle.rs"]
 mod raster_triangle;
-#[path = "../tests/common/ray_cases.rs"]
-mod ray_cases;
 #[path = "report/ray_cone.rs"]
 mod ray_cone;
 #[path = "report/ray_cylinder.rs"]

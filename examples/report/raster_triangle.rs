@@ -21,39 +21,12 @@ use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::raster::rasterize_triangle;
 use exactray::shape::Triangle;
+use exactray::testing::{RASTER_AREAS, RasterTriangle, raster_triangle_case};
 use exactray_oracle::oracle;
 use glam::{DVec2, DVec3};
 
-/// One triangle on a grid that holds it.
-#[derive(Clone, Copy)]
-pub struct Case {
-    v: [DVec2; 3],
-    w: u32,
-    h: u32,
-}
-
-/// The triangle's legs, by area in pixels.
-pub const SIZES: [u32; 6] = [8, 128, 2048, 8192, 32768, 100352];
-
-pub fn case(rng: &mut exactray::testing::SplitMix64, area: u32) -> Case {
-    let leg = (2.0 * area as f64).sqrt();
-    let angle = rng.next_f64() * std::f64::consts::TAU;
-    let (s, c) = angle.sin_cos();
-    let e1 = DVec2::new(c, s) * leg;
-    let e2 = DVec2::new(-s, c) * leg;
-    let origin = DVec2::new(rng.next_f64(), rng.next_f64());
-    let v = [origin, origin + e1, origin + e2];
-    // On the grid: the bounding box shifted to start within (1, 2), and a
-    // grid one pixel larger than it on each side.
-    let shift = DVec2::ONE - v[0].min(v[1]).min(v[2]).floor();
-    let v = v.map(|p| p + shift);
-    let hi = v[0].max(v[1]).max(v[2]).ceil() + 1.0;
-    Case {
-        v,
-        w: hi.x as u32,
-        h: hi.y as u32,
-    }
-}
+/// One triangle on a grid that holds it (`exactray::testing`).
+type Case = RasterTriangle;
 
 /// The pixel range `[first, last)` whose centres the box `[lo, hi]` holds.
 fn centres(lo: f64, hi: f64, n: u32) -> (u32, u32) {
@@ -65,12 +38,16 @@ fn centres(lo: f64, hi: f64, n: u32) -> (u32, u32) {
 /// Calls `f(x, y, covered)` for every pixel of the bounding box, covered
 /// when the ray through its centre hits the triangle.
 fn by_rays(c: &Case, mut f: impl FnMut(u32, u32, bool)) {
-    let tri =
-        Triangle::new(c.v[0].extend(0.0), c.v[1].extend(0.0), c.v[2].extend(0.0)).expect("finite");
-    let lo = c.v[0].min(c.v[1]).min(c.v[2]);
-    let hi = c.v[0].max(c.v[1]).max(c.v[2]);
-    let (x0, x1) = centres(lo.x, hi.x, c.w);
-    let (y0, y1) = centres(lo.y, hi.y, c.h);
+    let tri = Triangle::new(
+        c.vertices[0].extend(0.0),
+        c.vertices[1].extend(0.0),
+        c.vertices[2].extend(0.0),
+    )
+    .expect("finite");
+    let lo = c.vertices[0].min(c.vertices[1]).min(c.vertices[2]);
+    let hi = c.vertices[0].max(c.vertices[1]).max(c.vertices[2]);
+    let (x0, x1) = centres(lo.x, hi.x, c.width);
+    let (y0, y1) = centres(lo.y, hi.y, c.height);
     for y in y0..y1 {
         for x in x0..x1 {
             let o = DVec3::new(x as f64 + 0.5, y as f64 + 0.5, 1.0);
@@ -84,7 +61,7 @@ fn by_rays(c: &Case, mut f: impl FnMut(u32, u32, bool)) {
 /// bounding box, the top-left rule on plain `f64` signs, calling `f` per
 /// covered pixel.
 fn naive(c: &Case, mut f: impl FnMut(u32, u32)) {
-    let [a, mut b, mut d] = c.v;
+    let [a, mut b, mut d] = c.vertices;
     let cross = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
     let area = cross(a, b, d);
     if area == 0.0 {
@@ -97,8 +74,8 @@ fn naive(c: &Case, mut f: impl FnMut(u32, u32)) {
     let owns = edges.map(|(p, q)| q.y < p.y || (q.y == p.y && q.x > p.x));
     let lo = a.min(b).min(d);
     let hi = a.max(b).max(d);
-    let (x0, x1) = centres(lo.x, hi.x, c.w);
-    let (y0, y1) = centres(lo.y, hi.y, c.h);
+    let (x0, x1) = centres(lo.x, hi.x, c.width);
+    let (y0, y1) = centres(lo.y, hi.y, c.height);
     let start = DVec2::new(x0 as f64 + 0.5, y0 as f64 + 0.5);
     let mut row = edges.map(|(p, q)| cross(p, q, start));
     for y in y0..y1 {
@@ -120,7 +97,15 @@ fn naive(c: &Case, mut f: impl FnMut(u32, u32)) {
 pub fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
     vec![
         method("exactray", |c: &Case| {
-            rasterize_triangle(c.v[0], c.v[1], c.v[2], c.w, c.h, |_, _, _| {}).unwrap_or(0)
+            rasterize_triangle(
+                c.vertices[0],
+                c.vertices[1],
+                c.vertices[2],
+                c.width,
+                c.height,
+                |_, _, _| {},
+            )
+            .unwrap_or(0)
         }),
         method("exactray-rays", |c: &Case| {
             let mut n = 0;
@@ -137,14 +122,19 @@ pub fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
 
 /// Each method's coverage of `c` as a grid of flags.
 fn coverage(c: &Case, name: &str) -> Vec<bool> {
-    let mut grid = vec![false; (c.w * c.h) as usize];
-    let w = c.w;
+    let mut grid = vec![false; (c.width * c.height) as usize];
+    let w = c.width;
     let mut set = |x: u32, y: u32| grid[(y * w + x) as usize] = true;
     match name {
         "exactray" => {
-            rasterize_triangle(c.v[0], c.v[1], c.v[2], c.w, c.h, |y, x0, x1| {
-                (x0..x1).for_each(|x| set(x, y))
-            })
+            rasterize_triangle(
+                c.vertices[0],
+                c.vertices[1],
+                c.vertices[2],
+                c.width,
+                c.height,
+                |y, x0, x1| (x0..x1).for_each(|x| set(x, y)),
+            )
             .expect("finite");
         }
         "exactray-rays" => by_rays(c, |x, y, hit| {
@@ -159,22 +149,22 @@ fn coverage(c: &Case, name: &str) -> Vec<bool> {
 
 /// The exact coverage: orient2d in integers at every centre of the grid.
 fn exact(c: &Case) -> Vec<bool> {
-    let v = c.v.map(|p| p.to_array());
+    let v = c.vertices.map(|p| p.to_array());
     let (a, b, d) = match oracle::orient2d(v[0], v[1], v[2]) {
         1 => (v[0], v[1], v[2]),
         -1 => (v[0], v[2], v[1]),
-        _ => return vec![false; (c.w * c.h) as usize],
+        _ => return vec![false; (c.width * c.height) as usize],
     };
     let edges = [(a, b), (b, d), (d, a)];
-    let lo = c.v[0].min(c.v[1]).min(c.v[2]);
-    let hi = c.v[0].max(c.v[1]).max(c.v[2]);
-    let mut grid = vec![false; (c.w * c.h) as usize];
-    let (x0, x1) = centres(lo.x, hi.x, c.w);
-    let (y0, y1) = centres(lo.y, hi.y, c.h);
+    let lo = c.vertices[0].min(c.vertices[1]).min(c.vertices[2]);
+    let hi = c.vertices[0].max(c.vertices[1]).max(c.vertices[2]);
+    let mut grid = vec![false; (c.width * c.height) as usize];
+    let (x0, x1) = centres(lo.x, hi.x, c.width);
+    let (y0, y1) = centres(lo.y, hi.y, c.height);
     for y in y0..y1 {
         for x in x0..x1 {
             let p = [x as f64 + 0.5, y as f64 + 0.5];
-            grid[(y * c.w + x) as usize] =
+            grid[(y * c.width + x) as usize] =
                 edges
                     .iter()
                     .all(|&(p0, q)| match oracle::orient2d(p0, q, p) {
@@ -194,7 +184,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         "raster_triangle (Q2): ns per covered pixel, and the rays' time over the rasterizer's, same run:\n\n\
          | pixels | exactray ns/pixel | exactray-rays ns/pixel | rays / raster |\n|---|---|---|---|\n",
     );
-    for area in SIZES {
+    for area in RASTER_AREAS {
         let inputs = format!("pixels:{area}");
         let mut rng = cfg.rng("raster_triangle", &inputs);
         // Enough triangles that a timed loop lasts, few enough to check
@@ -203,7 +193,9 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         let checked = (if cfg.quick { 400_000 } else { 2_000_000 } / area)
             .clamp(1, 64)
             .min(count as u32) as usize;
-        let cases: Vec<Case> = (0..count).map(|_| case(&mut rng, area)).collect();
+        let cases: Vec<Case> = (0..count)
+            .map(|_| raster_triangle_case(&mut rng, area))
+            .collect();
         let truth: Vec<Vec<bool>> = cases[..checked].iter().map(exact).collect();
         let times = time_methods(cfg, &cases, &methods);
         for (m, &ns) in methods.iter().zip(&times) {
