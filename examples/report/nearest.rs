@@ -19,15 +19,13 @@ use exactray::bvh::{Nearest, QueryStats};
 use exactray::testing::{nearest_points, nearest_queries};
 use exactray_oracle::oracle;
 use glam::DVec3;
-use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use rstar::RTree;
 use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-pub type Point = [f64; 3];
-pub type KiddoTree = ImmutableKdTree<f64, 3>;
+pub use exactray_peers::nearest::{KiddoTree, Point, kiddo_build, kiddo_nearest, rstar_build};
 
 /// How points and queries are drawn (`exactray::testing`).
 pub use exactray::testing::PointDistribution as Dist;
@@ -145,21 +143,6 @@ pub fn brute_force_oracle(points: &[Point], q: Point) -> Option<usize> {
 
 pub fn exactray_build(points: &[Point]) -> SphereBvh {
     SphereBvh::from_points(points).expect("finite points")
-}
-
-pub fn kiddo_build(points: &[Point]) -> KiddoTree {
-    KiddoTree::new_from_slice(points).expect("fewer than 2^32 points")
-}
-
-pub fn kiddo_nearest(tree: &KiddoTree, q: &Point) -> usize {
-    tree.query(q)
-        .nearest_one::<SquaredEuclidean<f64>>()
-        .execute()
-        .item as usize
-}
-
-pub fn rstar_build(points: &[Point]) -> RTree<Point> {
-    RTree::bulk_load(points.to_vec())
 }
 
 /// The indexes of one point set, shared by the methods' closures.

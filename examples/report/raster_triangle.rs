@@ -17,95 +17,19 @@
 //! theirs on both sides of it.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
-use exactray::interval::Interval;
-use exactray::query::ray::Ray;
 use exactray::raster::rasterize_triangle;
-use exactray::shape::Triangle;
 use exactray::testing::{RASTER_AREAS, RasterTriangle, raster_triangle_case};
 use exactray_oracle::oracle;
-use glam::{DVec2, DVec3};
+use exactray_peers::raster::{by_rays, centres, naive};
 
 /// One triangle on a grid that holds it (`exactray::testing`).
 type Case = RasterTriangle;
 
-/// The pixel range `[first, last)` whose centres the box `[lo, hi]` holds.
-fn centres(lo: f64, hi: f64, n: u32) -> (u32, u32) {
-    let first = (lo - 0.5).ceil().clamp(0.0, n as f64) as u32;
-    let last = ((hi - 0.5).floor() + 1.0).clamp(0.0, n as f64) as u32;
-    (first, last)
-}
-
-/// Calls `f(x, y, covered)` for every pixel of the bounding box, covered
-/// when the ray through its centre hits the triangle.
-fn by_rays(c: &Case, mut f: impl FnMut(u32, u32, bool)) {
-    let tri = Triangle::new(
-        c.vertices[0].extend(0.0),
-        c.vertices[1].extend(0.0),
-        c.vertices[2].extend(0.0),
-    )
-    .expect("finite");
-    let lo = c.vertices[0].min(c.vertices[1]).min(c.vertices[2]);
-    let hi = c.vertices[0].max(c.vertices[1]).max(c.vertices[2]);
-    let (x0, x1) = centres(lo.x, hi.x, c.width);
-    let (y0, y1) = centres(lo.y, hi.y, c.height);
-    for y in y0..y1 {
-        for x in x0..x1 {
-            let o = DVec3::new(x as f64 + 0.5, y as f64 + 0.5, 1.0);
-            let ray = Ray::new(o, DVec3::NEG_Z).expect("finite");
-            f(x, y, tri.cast_watertight(&ray, Interval::FORWARD).is_some());
-        }
-    }
-}
-
-/// The textbook rasterizer: edge functions stepped over every pixel of the
-/// bounding box, the top-left rule on plain `f64` signs, calling `f` per
-/// covered pixel.
-fn naive(c: &Case, mut f: impl FnMut(u32, u32)) {
-    let [a, mut b, mut d] = c.vertices;
-    let cross = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
-    let area = cross(a, b, d);
-    if area == 0.0 {
-        return;
-    }
-    if area < 0.0 {
-        std::mem::swap(&mut b, &mut d);
-    }
-    let edges = [(b, d), (d, a), (a, b)];
-    let owns = edges.map(|(p, q)| q.y < p.y || (q.y == p.y && q.x > p.x));
-    let lo = a.min(b).min(d);
-    let hi = a.max(b).max(d);
-    let (x0, x1) = centres(lo.x, hi.x, c.width);
-    let (y0, y1) = centres(lo.y, hi.y, c.height);
-    let start = DVec2::new(x0 as f64 + 0.5, y0 as f64 + 0.5);
-    let mut row = edges.map(|(p, q)| cross(p, q, start));
-    for y in y0..y1 {
-        let mut e = row;
-        for x in x0..x1 {
-            if (0..3).all(|i| e[i] > 0.0 || (e[i] == 0.0 && owns[i])) {
-                f(x, y);
-            }
-            for i in 0..3 {
-                e[i] += edges[i].0.y - edges[i].1.y;
-            }
-        }
-        for i in 0..3 {
-            row[i] += edges[i].1.x - edges[i].0.x;
-        }
-    }
-}
-
 pub fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
     vec![
         method("exactray", |c: &Case| {
-            rasterize_triangle(
-                c.vertices[0],
-                c.vertices[1],
-                c.vertices[2],
-                c.width,
-                c.height,
-                |_, _, _| {},
-            )
-            .unwrap_or(0)
+            let [a, b, d] = c.vertices;
+            rasterize_triangle(a, b, d, c.width, c.height, |_, _, _| {}).unwrap_or(0)
         }),
         method("exactray-rays", |c: &Case| {
             let mut n = 0;
@@ -127,14 +51,10 @@ fn coverage(c: &Case, name: &str) -> Vec<bool> {
     let mut set = |x: u32, y: u32| grid[(y * w + x) as usize] = true;
     match name {
         "exactray" => {
-            rasterize_triangle(
-                c.vertices[0],
-                c.vertices[1],
-                c.vertices[2],
-                c.width,
-                c.height,
-                |y, x0, x1| (x0..x1).for_each(|x| set(x, y)),
-            )
+            let [a, b, d] = c.vertices;
+            rasterize_triangle(a, b, d, c.width, c.height, |y, x0, x1| {
+                (x0..x1).for_each(|x| set(x, y))
+            })
             .expect("finite");
         }
         "exactray-rays" => by_rays(c, |x, y, hit| {
