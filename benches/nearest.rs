@@ -2,77 +2,98 @@
 //! uniform and clustered, for exactray's `SphereBvh` (one query at a time and
 //! `nearest_many`), `kiddo` and `rstar`; and of building each index.
 //!
-//! The point sets, queries, methods and timed loop are the report's own
-//! (`examples/report/nearest.rs`), so both measure the same code the same
-//! way; query times are per query, build times per index.
+//! The point sets and queries are the report's (`exactray::testing`), the
+//! peers' calls the report's (`exactray-peers`); query times are per query,
+//! build times per index.
 
-// Clippy builds benches with cfg(test) but no test harness, which drops the
-// oracle's self-test functions and leaves their `use` unused.
-#[allow(unused_imports)]
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
-#[allow(dead_code)]
-#[path = "../examples/report/framework.rs"]
-mod framework;
-#[allow(dead_code)]
-#[path = "../examples/report/nearest.rs"]
-mod nearest;
-#[allow(dead_code)]
-#[path = "../examples/report/output.rs"]
-mod output;
-
-use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
-use framework::Config;
-use nearest::{Dist, Indexes};
-use std::time::Duration;
+use criterion::measurement::WallTime;
+use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion_main};
+use exactray::bvh::SphereBvh;
+use exactray::testing::{PointDistribution, nearest_points, nearest_queries};
+use exactray_peers::nearest::{Point, kiddo_build, kiddo_nearest, rstar_build};
+use glam::DVec3;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 const NS: [usize; 2] = [100_000, 1_000_000];
-const DISTS: [Dist; 2] = [Dist::Uniform, Dist::Clustered];
-const METHODS: [&str; 4] = ["exactray", "exactray-batch", "kiddo", "rstar"];
+const DISTS: [PointDistribution; 2] = [PointDistribution::Uniform, PointDistribution::Clustered];
 /// Queries per pass: enough that the batch has work for every thread.
 const QUERIES: usize = 4096;
 
+fn exactray_build(points: &[Point]) -> SphereBvh {
+    SphereBvh::from_points(points).expect("finite points")
+}
+
+/// One criterion iteration is one query: whole passes over the queries
+/// (`pass` answers them all once), the time scaled back.
+fn per_query(
+    group: &mut BenchmarkGroup<WallTime>,
+    name: &str,
+    queries: usize,
+    mut pass: impl FnMut(),
+) {
+    group.bench_function(name, |b| {
+        b.iter_custom(|iters| {
+            let passes = iters.div_ceil(queries as u64);
+            let start = Instant::now();
+            for _ in 0..passes {
+                pass();
+            }
+            let t = start.elapsed();
+            t.mul_f64(iters as f64 / (passes * queries as u64) as f64)
+        })
+    });
+}
+
 fn queries(c: &mut Criterion) {
-    let cfg = Config::new(true);
     for n in NS {
         for dist in DISTS {
-            let ix = Indexes::build(nearest::points(&cfg, dist, n));
-            let qs = nearest::queries(&cfg, dist, n, QUERIES);
-            let mut group = c.benchmark_group(format!("nearest/{}", dist.inputs(n)));
-            for m in nearest::methods(&ix)
-                .iter()
-                .filter(|m| METHODS.contains(&m.name()))
-            {
-                group.bench_function(m.name(), |b| {
-                    // One criterion iteration is one query: run whole passes
-                    // over the queries and scale the time back.
-                    b.iter_custom(|iters| {
-                        let passes = iters.div_ceil(qs.len() as u64);
-                        let t = m.run_loop(&qs, passes);
-                        t.mul_f64(iters as f64 / (passes * qs.len() as u64) as f64)
-                    })
-                });
-            }
+            let points: Vec<Point> = nearest_points(dist, n).collect();
+            let qs: Vec<DVec3> = nearest_queries(dist, n, QUERIES).collect();
+            let tree = exactray_build(&points);
+            let kiddo = kiddo_build(&points);
+            let rstar = rstar_build(&points);
+            let mut group = c.benchmark_group(format!("nearest/{}:{n}", dist.name()));
+            per_query(&mut group, "exactray", qs.len(), || {
+                for q in black_box(&qs) {
+                    black_box(tree.nearest(*q).map(|n| n.point.to_array()));
+                }
+            });
+            let mut out = vec![None; qs.len()];
+            per_query(&mut group, "exactray-batch", qs.len(), || {
+                tree.nearest_many(black_box(&qs), &mut out)
+                    .expect("as many answers as queries");
+                black_box(&mut out);
+            });
+            per_query(&mut group, "kiddo", qs.len(), || {
+                for q in black_box(&qs) {
+                    black_box(points[kiddo_nearest(&kiddo, &q.to_array())]);
+                }
+            });
+            per_query(&mut group, "rstar", qs.len(), || {
+                for q in black_box(&qs) {
+                    black_box(rstar.nearest_neighbor(q.to_array()).copied());
+                }
+            });
             group.finish();
         }
     }
 }
 
 fn builds(c: &mut Criterion) {
-    let cfg = Config::new(true);
+    let dist = PointDistribution::Uniform;
     for n in NS {
-        let points = nearest::points(&cfg, Dist::Uniform, n);
-        let mut group = c.benchmark_group(format!("nearest_build/{}", Dist::Uniform.inputs(n)));
+        let points: Vec<Point> = nearest_points(dist, n).collect();
+        let mut group = c.benchmark_group(format!("nearest_build/{}:{n}", dist.name()));
         let input = || points.as_slice();
         group.bench_function("exactray", |b| {
-            b.iter_batched(input, nearest::exactray_build, BatchSize::PerIteration)
+            b.iter_batched(input, exactray_build, BatchSize::PerIteration)
         });
         group.bench_function("kiddo", |b| {
-            b.iter_batched(input, nearest::kiddo_build, BatchSize::PerIteration)
+            b.iter_batched(input, kiddo_build, BatchSize::PerIteration)
         });
         group.bench_function("rstar", |b| {
-            b.iter_batched(input, nearest::rstar_build, BatchSize::PerIteration)
+            b.iter_batched(input, rstar_build, BatchSize::PerIteration)
         });
         group.finish();
     }

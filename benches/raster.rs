@@ -1,43 +1,53 @@
 //! Criterion benchmarks for exam question Q2: the pixels of one triangle
 //! by rasterizing it and by casting one ray per pixel of its bounding box,
-//! at areas from 8 to about 10^5 pixels.
+//! beside the textbook rasterizer, at areas from 8 to about 10^5 pixels.
 //!
-//! The triangles and methods are the report's own
-//! (`examples/report/raster_triangle.rs`); times are per triangle.
-
-// Clippy builds benches with cfg(test) but no test harness, which drops the
-// oracle's self-test functions and leaves their `use` unused.
-#[allow(unused_imports)]
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
-#[allow(dead_code)]
-#[path = "../examples/report/framework.rs"]
-mod framework;
-#[allow(dead_code)]
-#[path = "../examples/report/raster_triangle.rs"]
-mod raster_triangle;
+//! The triangles are the report's (`exactray::testing`, the report's
+//! streams `raster_triangle/pixels:N`), the rays and the textbook
+//! rasterizer the report's (`exactray-peers`); times are per triangle.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use framework::Config;
+use exactray::raster::rasterize_triangle;
+use exactray::testing::{RASTER_AREAS, RasterTriangle, SplitMix64, raster_triangle_case};
+use exactray_peers::raster::{by_rays, naive};
 use std::hint::black_box;
 use std::time::Duration;
 
+/// A method: the number of pixels it covers.
+type Method = fn(&RasterTriangle) -> u64;
+
+/// The methods, by name.
+const METHODS: [(&str, Method); 3] = [
+    ("exactray", |c| {
+        let [a, b, d] = c.vertices;
+        rasterize_triangle(a, b, d, c.width, c.height, |_, _, _| {}).unwrap_or(0)
+    }),
+    ("exactray-rays", |c| {
+        let mut n = 0;
+        by_rays(c, |_, _, hit| n += hit as u64);
+        n
+    }),
+    ("naive", |c| {
+        let mut n = 0;
+        naive(c, |_, _| n += 1);
+        n
+    }),
+];
+
 fn triangles(c: &mut Criterion) {
-    let cfg = Config::new(true);
-    let methods = raster_triangle::methods();
-    for area in raster_triangle::SIZES {
-        let mut rng = cfg.rng("raster_triangle", &format!("pixels:{area}"));
-        let cases: Vec<_> = (0..16)
-            .map(|_| raster_triangle::case(&mut rng, area))
+    for area in RASTER_AREAS {
+        let inputs = format!("pixels:{area}");
+        let mut rng = SplitMix64::for_inputs("raster_triangle", &inputs);
+        let cases: Vec<RasterTriangle> = (0..16)
+            .map(|_| raster_triangle_case(&mut rng, area))
             .collect();
-        let mut group = c.benchmark_group(format!("raster_triangle/pixels:{area}"));
-        for m in &methods {
-            group.bench_function(m.name(), |b| {
+        let mut group = c.benchmark_group(format!("raster_triangle/{inputs}"));
+        for (name, method) in METHODS {
+            group.bench_function(name, |b| {
                 let mut i = 0;
                 b.iter(|| {
                     i = (i + 1) % cases.len();
-                    m.answer(black_box(&cases[i]))
+                    method(black_box(&cases[i]))
                 })
             });
         }

@@ -3,11 +3,9 @@
 //! plus or minus the radius), on every magnitude from subnormal to near
 //! `f64::MAX`, including sums that cancel.
 
-mod common;
-
-use common::oracle::exact_parts;
 use exactray::prelude::*;
 use exactray::testing::SplitMix64;
+use exactray_oracle::oracle::exact_parts;
 use glam::DVec3;
 use num_bigint::BigInt;
 

@@ -1,15 +1,13 @@
 //! `SphereBvh` against exact brute force (the num-bigint oracle of
-//! `tests/common/oracle.rs`) on random, clustered, collinear, all-equal,
+//! `exactray-oracle`, `tests/oracle/src/oracle.rs`) on random, clustered, collinear, all-equal,
 //! grid (exact ties), near-tie, huge, tiny and mixed-magnitude point sets;
 //! pruning against brute force's work; bad input; spade's nearest neighbour.
 
-mod common;
-
-use common::oracle;
 use core::cmp::Ordering;
 use exactray::bvh::{Nearest, QueryStats};
 use exactray::testing::{SplitMix64, step_ulps};
 use exactray::{InputError, bvh::SphereBvh};
+use exactray_oracle::oracle;
 use glam::DVec3;
 use proptest::prelude::*;
 

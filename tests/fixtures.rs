@@ -13,16 +13,14 @@
 //! `p` lines) and queries against it (its `q` lines), so its checkers take
 //! the whole file: see [`Check`].
 
-mod common;
-
-use common::line_oracle::{LineAnswer, Quadratic, ulps_between};
-use common::oracle;
 use exactray::bvh::Nearest;
 use exactray::bvh::SphereBvh;
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::roots::Roots;
 use exactray::shape::{Cylinder, Quadric, Sphere, Triangle};
+use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
+use exactray_oracle::oracle;
 use num_traits::Zero;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -69,7 +67,7 @@ struct Kind {
     min_fields: usize,
     /// Runs the crate's implementation; `None` until an issue implements it.
     predicate: Option<Check>,
-    /// Runs the exact oracle of `tests/common/oracle.rs`; agreement with
+    /// Runs the exact oracle of `exactray-oracle` (`tests/oracle/src/oracle.rs`); agreement with
     /// CGAL validates the fixtures and the oracle against each other.
     oracle: Option<Check>,
 }

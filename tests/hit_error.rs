@@ -8,13 +8,10 @@
 //! correct rounding (the line oracle's answer), and the points at both
 //! neighbours must lie inside the box (the point is affine in `t`).
 
-mod common;
-
-use common::line_oracle::{Dyadic, Quadratic};
-use common::oracle::exact_parts;
-use common::ray_cases;
 use exactray::prelude::*;
-use exactray::testing::SplitMix64;
+use exactray::testing::{RayTriangleClass, SplitMix64, ray_triangle_case};
+use exactray_oracle::line_oracle::{Dyadic, Quadratic};
+use exactray_oracle::oracle::exact_parts;
 use glam::DVec3;
 use num_bigint::BigInt;
 use num_traits::Signed;
@@ -93,12 +90,7 @@ fn triangle_hit_points_hold_the_exact_crossing() {
     let mut checked = 0;
     for seed in 0..40_000u64 {
         let mut rng = SplitMix64::new(seed);
-        let (o, d, v) = match seed % 4 {
-            0 => ray_cases::uniform(&mut rng),
-            1 => ray_cases::far(&mut rng),
-            2 => ray_cases::near_edge(&mut rng),
-            _ => ray_cases::grazing(&mut rng),
-        };
+        let (o, d, v) = ray_triangle_case(RayTriangleClass::ALL[seed as usize % 4], &mut rng);
         let (Ok(ray), Ok(tri)) = (Ray::new(o, d), Triangle::new(v[0], v[1], v[2])) else {
             continue;
         };

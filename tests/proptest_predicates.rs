@@ -7,9 +7,6 @@
 //! crate's `proptest` feature. A seed drives every class at once, so each
 //! property covers each class on every case.
 
-mod common;
-
-use common::oracle;
 use exactray::testing::finite_f64_from_bits;
 use exactray::testing::{
     InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
@@ -22,6 +19,7 @@ use exactray::{
         try_incircle, try_insphere, try_orient2d, try_orient3d, try_same_side, try_side_of_plane,
     },
 };
+use exactray_oracle::oracle;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use proptest::prelude::*;
 use proptest::test_runner::Config;

@@ -3,12 +3,10 @@
 //! independently), and the fill rule's promise: triangles sharing edges
 //! cover each pixel of their union exactly once.
 
-mod common;
-
-use common::oracle;
 use exactray::InputError;
 use exactray::raster::rasterize_triangle;
 use exactray::testing::SplitMix64;
+use exactray_oracle::oracle;
 use proptest::prelude::*;
 
 type P = [f64; 2];

@@ -5,16 +5,15 @@
 //! vertex of a tiled mesh through; all variants stay defined on every
 //! finite input.
 
-mod common;
-
-use common::oracle;
-use common::ray_cases::{self, Case, TiledMesh};
 use exactray::interval::Interval;
 use exactray::query::ray::EXACT_T_ULPS;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Triangle;
-use exactray::testing::{SplitMix64, step_ulps};
+use exactray::testing::{
+    RayTriangleCase as Case, RayTriangleClass, SplitMix64, TiledMesh, ray_triangle_case, step_ulps,
+};
+use exactray_oracle::oracle;
 use glam::DVec3;
 use proptest::prelude::*;
 
@@ -83,12 +82,7 @@ fn check_fast(c: &Case, range: Interval) -> Result<(), TestCaseError> {
 
 fn case_from(seed: u64, kind: u8) -> Case {
     let mut rng = SplitMix64::new(seed);
-    match kind % 4 {
-        0 => ray_cases::uniform(&mut rng),
-        1 => ray_cases::far(&mut rng),
-        2 => ray_cases::near_edge(&mut rng),
-        _ => ray_cases::grazing(&mut rng),
-    }
+    ray_triangle_case(RayTriangleClass::ALL[kind as usize % 4], &mut rng)
 }
 
 /// Every coordinate of a case scaled by `2^k` (exact unless it leaves the
@@ -209,7 +203,7 @@ fn origins_nearly_on_the_plane() {
     let mut rng = SplitMix64::new(0x0f1a7e);
     let mut found = 0;
     for _ in 0..4000 {
-        let (_, _, v) = ray_cases::uniform(&mut rng);
+        let (_, _, v) = ray_triangle_case(RayTriangleClass::Uniform, &mut rng);
         let (a, b) = (rng.next_f64() * 0.5, rng.next_f64() * 0.5);
         let p = v[0] + (v[1] - v[0]) * a + (v[2] - v[0]) * b;
         let d = DVec3::new(rng.next_f64() - 0.5, rng.next_f64() - 0.5, 1.0);

@@ -5,13 +5,11 @@
 //! kept as exact bit patterns (`f64::to_bits`) together with the oracle's sign
 //! at the time of the finding, which is re-checked against the oracle too.
 
-mod common;
-
-use common::oracle;
 use exactray::{
     Sign,
     predicates::{SideRelation, incircle, insphere, orient2d, orient3d, same_side, side_of_plane},
 };
+use exactray_oracle::oracle;
 use glam::{DVec2, DVec3};
 
 fn s(v: i8) -> Sign {

@@ -4,12 +4,10 @@
 //! has a root in `[t - 4 ulps, t + 4 ulps]` when it changes sign there or
 //! when its vertex lies there with a non-negative discriminant.
 
-mod common;
-
-use common::oracle;
 use exactray::InputError;
 use exactray::roots::{Roots, solve_quadratic, try_solve_quadratic};
 use exactray::testing::step_ulps;
+use exactray_oracle::oracle;
 use proptest::prelude::*;
 
 fn check(a: f64, b: f64, c: f64) -> Result<(), TestCaseError> {

@@ -1,5 +1,5 @@
 //! What every family shares: the run configuration, the report row, methods
-//! under test and the timing loop. Also compiled into `benches/predicates.rs`.
+//! under test and the timing loop.
 
 use exactray::testing::SplitMix64;
 use std::hint::black_box;
@@ -44,15 +44,7 @@ impl Config {
     /// The case stream of one (family, inputs): fixed, and independent of
     /// which other families run.
     pub fn rng(&self, family: &str, inputs: &str) -> SplitMix64 {
-        // FNV-1a: any stable string hash would do.
-        let seed = family
-            .bytes()
-            .chain([b'/'])
-            .chain(inputs.bytes())
-            .fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
-                (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
-            });
-        SplitMix64::new(seed)
+        SplitMix64::for_inputs(family, inputs)
     }
 }
 

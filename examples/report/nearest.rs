@@ -14,46 +14,25 @@
 //! `benches/nearest.rs`.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
-use crate::oracle;
 use exactray::bvh::SphereBvh;
 use exactray::bvh::{Nearest, QueryStats};
-use exactray::testing::SplitMix64;
+use exactray::testing::{nearest_points, nearest_queries};
+use exactray_oracle::oracle;
 use glam::DVec3;
-use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use rstar::RTree;
 use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-pub type Point = [f64; 3];
-pub type KiddoTree = ImmutableKdTree<f64, 3>;
+pub use exactray_peers::nearest::{KiddoTree, Point, kiddo_build, kiddo_nearest, rstar_build};
 
-/// How points and queries are drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dist {
-    Uniform,
-    Clustered,
-    OffDistribution,
-    /// A cubic grid whose coordinates are nudged by up to one ulp, queried
-    /// at cell centres nudged by one ulp: 8-way near-ties everywhere.
-    NearTies,
-}
+/// How points and queries are drawn (`exactray::testing`).
+pub use exactray::testing::PointDistribution as Dist;
 
-impl Dist {
-    pub fn name(self) -> &'static str {
-        match self {
-            Dist::Uniform => "uniform",
-            Dist::Clustered => "clustered",
-            Dist::OffDistribution => "off-distribution",
-            Dist::NearTies => "near-ties",
-        }
-    }
-
-    /// The report's `inputs` field: the class and the number of points.
-    pub fn inputs(self, n: usize) -> String {
-        format!("{}:{n}", self.name())
-    }
+/// The report's `inputs` field: the class and the number of points.
+pub fn inputs(dist: Dist, n: usize) -> String {
+    format!("{}:{n}", dist.name())
 }
 
 /// How much work the nearest families do.
@@ -98,96 +77,15 @@ impl Sizes {
     }
 }
 
-/// The points' mixture: 100 clusters, centres uniform in the unit cube,
-/// standard deviations log-uniform in [0.004, 0.032]. The same for every N.
-fn clusters(cfg: &Config) -> Vec<(Point, f64)> {
-    let mut rng = cfg.rng("nearest", "clusters");
-    (0..100)
-        .map(|_| {
-            let centre = [rng.next_f64(), rng.next_f64(), rng.next_f64()];
-            (centre, 0.004 * 8f64.powf(rng.next_f64()))
-        })
-        .collect()
-}
-
-/// A standard normal variate (Box-Muller).
-fn gaussian(rng: &mut SplitMix64) -> f64 {
-    let u = 1.0 - rng.next_f64(); // in (0, 1]
-    let v = rng.next_f64();
-    (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-}
-
-fn uniform_point(rng: &mut SplitMix64) -> Point {
-    [rng.next_f64(), rng.next_f64(), rng.next_f64()]
-}
-
-fn clustered_point(rng: &mut SplitMix64, clusters: &[(Point, f64)]) -> Point {
-    let k = ((rng.next_u64() as u128 * clusters.len() as u128) >> 64) as usize;
-    let (c, s) = clusters[k];
-    [
-        c[0] + s * gaussian(rng),
-        c[1] + s * gaussian(rng),
-        c[2] + s * gaussian(rng),
-    ]
-}
-
 /// The `n` indexed points of `dist`: `off-distribution` shares the
 /// clustered ones. Always the same for the same `n`.
-pub fn points(cfg: &Config, dist: Dist, n: usize) -> Vec<Point> {
-    let key = match dist {
-        Dist::Uniform => "uniform",
-        Dist::Clustered | Dist::OffDistribution => "clustered",
-        Dist::NearTies => "near-ties",
-    };
-    let mut rng = cfg.rng("nearest", &format!("points/{key}:{n}"));
-    match dist {
-        Dist::Uniform => (0..n).map(|_| uniform_point(&mut rng)).collect(),
-        Dist::NearTies => {
-            let m = grid_side(n);
-            (0..n)
-                .map(|i| {
-                    let cell = [i % m, i / m % m, i / (m * m)];
-                    cell.map(|c| nudge(&mut rng, c as f64 / m as f64))
-                })
-                .collect()
-        }
-        _ => {
-            let c = clusters(cfg);
-            (0..n).map(|_| clustered_point(&mut rng, &c)).collect()
-        }
-    }
+pub fn points(dist: Dist, n: usize) -> Vec<Point> {
+    nearest_points(dist, n).collect()
 }
 
 /// `count` queries of `dist` for the `n`-point set.
-pub fn queries(cfg: &Config, dist: Dist, n: usize, count: usize) -> Vec<DVec3> {
-    let mut rng = cfg.rng("nearest", &format!("queries/{}", dist.inputs(n)));
-    let c = clusters(cfg);
-    (0..count)
-        .map(|_| {
-            DVec3::from_array(match dist {
-                Dist::Clustered => clustered_point(&mut rng, &c),
-                Dist::NearTies => {
-                    // A cell centre inside the filled part of the grid.
-                    let m = grid_side(n);
-                    let cells = (n / (m * m)).max(1);
-                    let cell =
-                        [m - 1, m - 1, cells - 1].map(|k| rng.next_u64() as usize % k.max(1));
-                    cell.map(|c| nudge(&mut rng, (c as f64 + 0.5) / m as f64))
-                }
-                _ => uniform_point(&mut rng),
-            })
-        })
-        .collect()
-}
-
-/// The side of the cubic grid holding `n` points.
-fn grid_side(n: usize) -> usize {
-    ((n as f64).cbrt().ceil() as usize).max(2)
-}
-
-/// `v` moved by -1, 0 or 1 ulp.
-fn nudge(rng: &mut SplitMix64, v: f64) -> f64 {
-    exactray::testing::step_ulps(v, (rng.next_u64() % 3) as i64 - 1)
+pub fn queries(dist: Dist, n: usize, count: usize) -> Vec<DVec3> {
+    nearest_queries(dist, n, count).collect()
 }
 
 /// Relative error bound on `fl(|p - q|^2)` (five roundings per term, `5u`
@@ -245,21 +143,6 @@ pub fn brute_force_oracle(points: &[Point], q: Point) -> Option<usize> {
 
 pub fn exactray_build(points: &[Point]) -> SphereBvh {
     SphereBvh::from_points(points).expect("finite points")
-}
-
-pub fn kiddo_build(points: &[Point]) -> KiddoTree {
-    KiddoTree::new_from_slice(points).expect("fewer than 2^32 points")
-}
-
-pub fn kiddo_nearest(tree: &KiddoTree, q: &Point) -> usize {
-    tree.query(q)
-        .nearest_one::<SquaredEuclidean<f64>>()
-        .execute()
-        .item as usize
-}
-
-pub fn rstar_build(points: &[Point]) -> RTree<Point> {
-    RTree::bulk_load(points.to_vec())
 }
 
 /// The indexes of one point set, shared by the methods' closures.
@@ -408,8 +291,8 @@ fn measure(
     details: &mut Vec<Detail>,
 ) -> Vec<Row> {
     let n = ix.points.len();
-    let inputs = dist.inputs(n);
-    let qs = queries(cfg, dist, n, sizes.queries);
+    let inputs = inputs(dist, n);
+    let qs = queries(dist, n, sizes.queries);
     let timing = Config {
         reps: sizes.reps,
         ..Config::new(cfg.quick)
@@ -536,10 +419,10 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     let mut rows = Vec::new();
     let mut details = Vec::new();
     for &n in &sizes.ns {
-        let ix = Indexes::build(points(cfg, Dist::Uniform, n));
+        let ix = Indexes::build(points(Dist::Uniform, n));
         rows.extend(measure(cfg, &sizes, &ix, Dist::Uniform, &mut details));
         drop(ix);
-        let ix = Indexes::build(points(cfg, Dist::Clustered, n));
+        let ix = Indexes::build(points(Dist::Clustered, n));
         rows.extend(measure(cfg, &sizes, &ix, Dist::Clustered, &mut details));
         rows.extend(measure(
             cfg,
@@ -552,7 +435,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     // Near-ties at the smallest size only: the exact brute force settles
     // eight near-tied candidates per query there.
     if let Some(&n) = sizes.ns.first() {
-        let ix = Indexes::build(points(cfg, Dist::NearTies, n));
+        let ix = Indexes::build(points(Dist::NearTies, n));
         rows.extend(measure(cfg, &sizes, &ix, Dist::NearTies, &mut details));
     }
     note("nearest", notes(&sizes, &details));

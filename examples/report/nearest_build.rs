@@ -4,7 +4,7 @@
 
 use crate::framework::{Config, Row, median, note};
 use crate::heap::held_by;
-use crate::nearest::{Dist, Point, exactray_build, kiddo_build, points, rstar_build};
+use crate::nearest::{Dist, Point, exactray_build, inputs, kiddo_build, points, rstar_build};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -62,7 +62,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     let mut body = Vec::new();
     for dist in [Dist::Uniform, Dist::Clustered] {
         for &n in &sizes.ns {
-            let pts = points(cfg, dist, n);
+            let pts = points(dist, n);
             let reps = reps(cfg, n);
             // Repetitions interleave the methods, as in the other families.
             let mut samples = vec![Vec::with_capacity(reps); METHODS.len()];
@@ -77,14 +77,14 @@ pub fn run(cfg: &Config) -> Vec<Row> {
                 METHODS.iter().map(|(_, _, held)| held(&pts)).collect();
             let held: Vec<f64> = measured.iter().map(|m| m.0 as f64 / n as f64).collect();
             let own = measured[0].1.unwrap_or(0) as f64 / n as f64;
-            let mut line = vec![dist.inputs(n)];
+            let mut line = vec![inputs(dist, n)];
             for (((name, _, _), s), bytes) in METHODS.iter().zip(samples).zip(&held) {
                 let ns = median(s);
                 line.push(format!("{ns:.1} ns, {bytes:.1} B"));
                 rows.push(Row {
                     family: "nearest_build",
                     method: name.to_string(),
-                    inputs: dist.inputs(n),
+                    inputs: inputs(dist, n),
                     ns_per_op: ns,
                     cases: 0,
                     errors: 0,

@@ -1,9 +1,10 @@
 //! orient2d: the sign of `(b - a) x (c - a)`, positive counterclockwise.
 
 use crate::framework::method;
-use crate::oracle;
-use crate::signs::{SignFamily, batch, coord, sign_of};
+use crate::signs::{SignFamily, batch};
 use exactray::testing::orient2d_case;
+use exactray_oracle::oracle;
+use exactray_peers::signs::{naive, robust, sign_of};
 use glam::DVec2;
 
 type Case = [DVec2; 3];
@@ -18,12 +19,8 @@ pub fn family() -> SignFamily<Case> {
                 exactray::predicates::orient2d(a, b, c).as_i8()
             }),
             batch("exactray-batch", exactray::predicates::orient2d_many),
-            method("naive", |&[a, b, c]: &Case| {
-                sign_of((b - a).perp_dot(c - a))
-            }),
-            method("robust", |&[a, b, c]: &Case| {
-                sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
-            }),
+            method("naive", naive::orient2d),
+            method("robust", robust::orient2d),
             method("geometry-predicates", |&[a, b, c]: &Case| {
                 sign_of(geometry_predicates::orient2d(a.into(), b.into(), c.into()))
             }),

@@ -3,23 +3,14 @@
 //! answer it with two orient3d calls, as a user of them would.
 
 use crate::framework::method;
-use crate::oracle;
 use crate::orient3d;
-use crate::signs::{NAN, SignFamily};
+use crate::signs::SignFamily;
 use exactray::testing::plane_side_case;
+use exactray_oracle::oracle;
+use exactray_peers::signs::{naive, plane_side_by, robust};
 use glam::DVec3;
 
 type Case = [DVec3; 5];
-
-type Orient3d = fn(DVec3, DVec3, DVec3, DVec3) -> i8;
-
-#[inline(always)]
-fn by_orient3d(o: Orient3d, &[x0, x1, x2, p, q]: &Case) -> i8 {
-    match (o(x0, x1, x2, p), o(x0, x1, x2, q)) {
-        (NAN, _) | (_, NAN) => NAN,
-        (s, t) => s * t,
-    }
-}
 
 pub fn family() -> SignFamily<Case> {
     SignFamily {
@@ -33,10 +24,10 @@ pub fn family() -> SignFamily<Case> {
             method("exactray", |&[x0, x1, x2, p, q]: &Case| {
                 exactray::predicates::same_side(x0, x1, x2, p, q).as_i8()
             }),
-            method("naive", |c: &Case| by_orient3d(orient3d::naive, c)),
-            method("robust", |c: &Case| by_orient3d(orient3d::robust, c)),
+            method("naive", naive::plane_side),
+            method("robust", robust::plane_side),
             method("geometry-predicates", |c: &Case| {
-                by_orient3d(orient3d::geometry_predicates, c)
+                plane_side_by(orient3d::geometry_predicates, c)
             }),
         ],
     }

@@ -17,110 +17,19 @@
 //! theirs on both sides of it.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
-use crate::oracle;
-use exactray::interval::Interval;
-use exactray::query::ray::Ray;
 use exactray::raster::rasterize_triangle;
-use exactray::shape::Triangle;
-use glam::{DVec2, DVec3};
+use exactray::testing::{RASTER_AREAS, RasterTriangle, raster_triangle_case};
+use exactray_oracle::oracle;
+use exactray_peers::raster::{by_rays, centres, naive};
 
-/// One triangle on a grid that holds it.
-#[derive(Clone, Copy)]
-pub struct Case {
-    v: [DVec2; 3],
-    w: u32,
-    h: u32,
-}
-
-/// The triangle's legs, by area in pixels.
-pub const SIZES: [u32; 6] = [8, 128, 2048, 8192, 32768, 100352];
-
-pub fn case(rng: &mut exactray::testing::SplitMix64, area: u32) -> Case {
-    let leg = (2.0 * area as f64).sqrt();
-    let angle = rng.next_f64() * std::f64::consts::TAU;
-    let (s, c) = angle.sin_cos();
-    let e1 = DVec2::new(c, s) * leg;
-    let e2 = DVec2::new(-s, c) * leg;
-    let origin = DVec2::new(rng.next_f64(), rng.next_f64());
-    let v = [origin, origin + e1, origin + e2];
-    // On the grid: the bounding box shifted to start within (1, 2), and a
-    // grid one pixel larger than it on each side.
-    let shift = DVec2::ONE - v[0].min(v[1]).min(v[2]).floor();
-    let v = v.map(|p| p + shift);
-    let hi = v[0].max(v[1]).max(v[2]).ceil() + 1.0;
-    Case {
-        v,
-        w: hi.x as u32,
-        h: hi.y as u32,
-    }
-}
-
-/// The pixel range `[first, last)` whose centres the box `[lo, hi]` holds.
-fn centres(lo: f64, hi: f64, n: u32) -> (u32, u32) {
-    let first = (lo - 0.5).ceil().clamp(0.0, n as f64) as u32;
-    let last = ((hi - 0.5).floor() + 1.0).clamp(0.0, n as f64) as u32;
-    (first, last)
-}
-
-/// Calls `f(x, y, covered)` for every pixel of the bounding box, covered
-/// when the ray through its centre hits the triangle.
-fn by_rays(c: &Case, mut f: impl FnMut(u32, u32, bool)) {
-    let tri =
-        Triangle::new(c.v[0].extend(0.0), c.v[1].extend(0.0), c.v[2].extend(0.0)).expect("finite");
-    let lo = c.v[0].min(c.v[1]).min(c.v[2]);
-    let hi = c.v[0].max(c.v[1]).max(c.v[2]);
-    let (x0, x1) = centres(lo.x, hi.x, c.w);
-    let (y0, y1) = centres(lo.y, hi.y, c.h);
-    for y in y0..y1 {
-        for x in x0..x1 {
-            let o = DVec3::new(x as f64 + 0.5, y as f64 + 0.5, 1.0);
-            let ray = Ray::new(o, DVec3::NEG_Z).expect("finite");
-            f(x, y, tri.cast_watertight(&ray, Interval::FORWARD).is_some());
-        }
-    }
-}
-
-/// The textbook rasterizer: edge functions stepped over every pixel of the
-/// bounding box, the top-left rule on plain `f64` signs, calling `f` per
-/// covered pixel.
-fn naive(c: &Case, mut f: impl FnMut(u32, u32)) {
-    let [a, mut b, mut d] = c.v;
-    let cross = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
-    let area = cross(a, b, d);
-    if area == 0.0 {
-        return;
-    }
-    if area < 0.0 {
-        std::mem::swap(&mut b, &mut d);
-    }
-    let edges = [(b, d), (d, a), (a, b)];
-    let owns = edges.map(|(p, q)| q.y < p.y || (q.y == p.y && q.x > p.x));
-    let lo = a.min(b).min(d);
-    let hi = a.max(b).max(d);
-    let (x0, x1) = centres(lo.x, hi.x, c.w);
-    let (y0, y1) = centres(lo.y, hi.y, c.h);
-    let start = DVec2::new(x0 as f64 + 0.5, y0 as f64 + 0.5);
-    let mut row = edges.map(|(p, q)| cross(p, q, start));
-    for y in y0..y1 {
-        let mut e = row;
-        for x in x0..x1 {
-            if (0..3).all(|i| e[i] > 0.0 || (e[i] == 0.0 && owns[i])) {
-                f(x, y);
-            }
-            for i in 0..3 {
-                e[i] += edges[i].0.y - edges[i].1.y;
-            }
-        }
-        for i in 0..3 {
-            row[i] += edges[i].1.x - edges[i].0.x;
-        }
-    }
-}
+/// One triangle on a grid that holds it (`exactray::testing`).
+type Case = RasterTriangle;
 
 pub fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
     vec![
         method("exactray", |c: &Case| {
-            rasterize_triangle(c.v[0], c.v[1], c.v[2], c.w, c.h, |_, _, _| {}).unwrap_or(0)
+            let [a, b, d] = c.vertices;
+            rasterize_triangle(a, b, d, c.width, c.height, |_, _, _| {}).unwrap_or(0)
         }),
         method("exactray-rays", |c: &Case| {
             let mut n = 0;
@@ -137,12 +46,13 @@ pub fn methods() -> Vec<Box<dyn Measure<Case, u64>>> {
 
 /// Each method's coverage of `c` as a grid of flags.
 fn coverage(c: &Case, name: &str) -> Vec<bool> {
-    let mut grid = vec![false; (c.w * c.h) as usize];
-    let w = c.w;
+    let mut grid = vec![false; (c.width * c.height) as usize];
+    let w = c.width;
     let mut set = |x: u32, y: u32| grid[(y * w + x) as usize] = true;
     match name {
         "exactray" => {
-            rasterize_triangle(c.v[0], c.v[1], c.v[2], c.w, c.h, |y, x0, x1| {
+            let [a, b, d] = c.vertices;
+            rasterize_triangle(a, b, d, c.width, c.height, |y, x0, x1| {
                 (x0..x1).for_each(|x| set(x, y))
             })
             .expect("finite");
@@ -159,22 +69,22 @@ fn coverage(c: &Case, name: &str) -> Vec<bool> {
 
 /// The exact coverage: orient2d in integers at every centre of the grid.
 fn exact(c: &Case) -> Vec<bool> {
-    let v = c.v.map(|p| p.to_array());
+    let v = c.vertices.map(|p| p.to_array());
     let (a, b, d) = match oracle::orient2d(v[0], v[1], v[2]) {
         1 => (v[0], v[1], v[2]),
         -1 => (v[0], v[2], v[1]),
-        _ => return vec![false; (c.w * c.h) as usize],
+        _ => return vec![false; (c.width * c.height) as usize],
     };
     let edges = [(a, b), (b, d), (d, a)];
-    let lo = c.v[0].min(c.v[1]).min(c.v[2]);
-    let hi = c.v[0].max(c.v[1]).max(c.v[2]);
-    let mut grid = vec![false; (c.w * c.h) as usize];
-    let (x0, x1) = centres(lo.x, hi.x, c.w);
-    let (y0, y1) = centres(lo.y, hi.y, c.h);
+    let lo = c.vertices[0].min(c.vertices[1]).min(c.vertices[2]);
+    let hi = c.vertices[0].max(c.vertices[1]).max(c.vertices[2]);
+    let mut grid = vec![false; (c.width * c.height) as usize];
+    let (x0, x1) = centres(lo.x, hi.x, c.width);
+    let (y0, y1) = centres(lo.y, hi.y, c.height);
     for y in y0..y1 {
         for x in x0..x1 {
             let p = [x as f64 + 0.5, y as f64 + 0.5];
-            grid[(y * c.w + x) as usize] =
+            grid[(y * c.width + x) as usize] =
                 edges
                     .iter()
                     .all(|&(p0, q)| match oracle::orient2d(p0, q, p) {
@@ -194,7 +104,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         "raster_triangle (Q2): ns per covered pixel, and the rays' time over the rasterizer's, same run:\n\n\
          | pixels | exactray ns/pixel | exactray-rays ns/pixel | rays / raster |\n|---|---|---|---|\n",
     );
-    for area in SIZES {
+    for area in RASTER_AREAS {
         let inputs = format!("pixels:{area}");
         let mut rng = cfg.rng("raster_triangle", &inputs);
         // Enough triangles that a timed loop lasts, few enough to check
@@ -203,7 +113,9 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         let checked = (if cfg.quick { 400_000 } else { 2_000_000 } / area)
             .clamp(1, 64)
             .min(count as u32) as usize;
-        let cases: Vec<Case> = (0..count).map(|_| case(&mut rng, area)).collect();
+        let cases: Vec<Case> = (0..count)
+            .map(|_| raster_triangle_case(&mut rng, area))
+            .collect();
         let truth: Vec<Vec<bool>> = cases[..checked].iter().map(exact).collect();
         let times = time_methods(cfg, &cases, &methods);
         for (m, &ns) in methods.iter().zip(&times) {

@@ -8,13 +8,13 @@
 //! within a few ulps of the rim or the apex are uncertain there.
 
 use crate::framework::method;
-use crate::line_oracle::Quadratic;
-use crate::ray_family::{RayFamily, cube, naive_first, parry_cast, uniform};
+use crate::ray_family::{RayFamily, inputs, naive_first, parry_cast};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::shape::Cone;
-use exactray::testing::SplitMix64;
+use exactray::testing::{ConeRay, ConeRayClass, cone_ray_case};
+use exactray_oracle::line_oracle::Quadratic;
 use glam::DVec3;
 
 #[derive(Clone)]
@@ -25,56 +25,29 @@ pub struct Case {
     c: DVec3,
     hh: f64,
     r: f64,
+    /// The apex `c + (0, hh, 0)` and the axis `(0, -2 hh, 0)` to the base.
+    apex: DVec3,
+    axis: DVec3,
     cone: Cone,
     ray: Ray,
 }
 
-fn apex(c: DVec3, hh: f64) -> DVec3 {
-    c + DVec3::new(0.0, hh, 0.0)
-}
-
-fn axis(hh: f64) -> DVec3 {
-    DVec3::new(0.0, -2.0 * hh, 0.0)
-}
-
-fn case(o: [f64; 3], d: [f64; 3], c: [f64; 3], hh: f64, r: f64) -> Case {
-    let c = DVec3::from(c);
+fn case(r: ConeRay) -> Case {
     Case {
-        o: o.into(),
-        d: d.into(),
-        c,
-        hh,
-        r,
-        cone: Cone::new(apex(c, hh), axis(hh), r).expect("valid cone"),
-        ray: Ray::new(o, d).expect("valid ray"),
+        o: r.origin.into(),
+        d: r.direction.into(),
+        c: r.center.into(),
+        hh: r.half_height,
+        r: r.radius,
+        apex: r.apex(),
+        axis: r.axis(),
+        cone: Cone::new(r.apex(), r.axis(), r.radius).expect("valid cone"),
+        ray: Ray::new(r.origin, r.direction).expect("valid ray"),
     }
 }
 
-fn ordinary(rng: &mut SplitMix64) -> Case {
-    let c = cube(rng, 1.0);
-    let (hh, r) = (uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
-    let o = cube(rng, 6.0);
-    let aim = cube(rng, 1.2);
-    let target: [f64; 3] = core::array::from_fn(|k| c[k] + aim[k]);
-    case(o, core::array::from_fn(|k| target[k] - o[k]), c, hh, r)
-}
-
-fn far(rng: &mut SplitMix64) -> Case {
-    let mut x = ordinary(rng);
-    let dist = 10f64.powf(uniform(rng, 6.0, 8.0));
-    let o = x.o + (x.o - x.c).normalize() * dist;
-    x = case(
-        o.into(),
-        ((x.o + x.d) - o).to_array(),
-        x.c.into(),
-        x.hh,
-        x.r,
-    );
-    x
-}
-
 fn oracle(c: &Case) -> Option<f64> {
-    let (ap, a) = (apex(c.c, c.hh), axis(c.hh));
+    let (ap, a) = (c.apex, c.axis);
     let s = a.dot(a);
     let ans = Quadratic::cone(c.o.into(), c.d.into(), ap.into(), a.into(), c.r).answer();
     let at = |t: f64| c.o + c.d * t;
@@ -97,7 +70,7 @@ fn oracle(c: &Case) -> Option<f64> {
 
 #[inline(always)]
 fn naive(c: &Case) -> Option<f64> {
-    let (ap, a) = (apex(c.c, c.hh), axis(c.hh));
+    let (ap, a) = (c.apex, c.axis);
     let (w, d) = (c.o - ap, c.d);
     let s = a.dot(a);
     let k = c.r * c.r / s;
@@ -128,7 +101,7 @@ fn parry(c: &Case) -> Option<f64> {
 pub fn family() -> RayFamily<Case> {
     RayFamily {
         name: "ray_cone",
-        inputs: vec![("uniform", ordinary), ("far", far)],
+        inputs: inputs(&ConeRayClass::ALL, ConeRayClass::name, cone_ray_case, case),
         oracle,
         methods: vec![
             method("exactray", |c: &Case| {

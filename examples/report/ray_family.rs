@@ -5,12 +5,29 @@
 //! hit's `t` from the correctly rounded `t`, over the cases both call hits.
 
 use crate::framework::{Config, Measure, Row, median, note, time_methods};
-use crate::line_oracle::ulps_between;
 use exactray::testing::SplitMix64;
+use exactray_oracle::line_oracle::ulps_between;
 use std::fmt::Write;
 
 /// Draws one case of an input class.
-pub type Generate<C> = fn(&mut SplitMix64) -> C;
+pub type Generate<C> = Box<dyn Fn(&mut SplitMix64) -> C>;
+
+/// A family's input classes (`exactray::testing::SphereRayClass::ALL`, ...):
+/// each class's name, and its cases drawn from `exactray::testing` by
+/// `draw` and built into the family's case type by `build`.
+pub fn inputs<K: Copy + 'static, R: 'static, C: 'static>(
+    classes: &[K],
+    name: fn(K) -> &'static str,
+    draw: fn(K, &mut SplitMix64) -> R,
+    build: fn(R) -> C,
+) -> Vec<(&'static str, Generate<C>)> {
+    classes
+        .iter()
+        .map(|&class| -> (&'static str, Generate<C>) {
+            (name(class), Box::new(move |rng| build(draw(class, rng))))
+        })
+        .collect()
+}
 
 /// A ray-cast family: its input classes, exact answer and methods.
 pub struct RayFamily<C> {
@@ -92,27 +109,6 @@ impl<C> RayFamily<C> {
 /// The first root `>= 0` of sorted roots.
 pub fn first_forward(roots: &[f64]) -> Option<f64> {
     roots.iter().copied().find(|&t| t >= 0.0)
-}
-
-/// A uniform value in `[lo, hi)`.
-pub fn uniform(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
-    lo + (hi - lo) * rng.next_f64()
-}
-
-/// A point uniform in the cube `[-h, h]^3`.
-pub fn cube(rng: &mut SplitMix64, h: f64) -> [f64; 3] {
-    core::array::from_fn(|_| uniform(rng, -h, h))
-}
-
-/// A unit vector, uniform on the sphere.
-pub fn unit(rng: &mut SplitMix64) -> [f64; 3] {
-    loop {
-        let v = cube(rng, 1.0);
-        let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        if n > 0.1 && n <= 1.0 {
-            return v.map(|x| x / n);
-        }
-    }
 }
 
 /// The textbook roots of `a t^2 + b t + c` (`b^2 - 4ac`, `(-b +- sqrt) / 2a`),

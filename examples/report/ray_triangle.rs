@@ -4,7 +4,7 @@
 //! `RayCast` uses) beside a textbook Möller–Trumbore (`naive`) and
 //! parry3d's triangle cast.
 //!
-//! Inputs (see `tests/common/ray_cases.rs`): `uniform` (ordinary rays, about
+//! Inputs (`exactray::testing::RayTriangleClass` and `TiledMesh`): `uniform` (ordinary rays, about
 //! a third hit), `far` (origins 10^6 to 10^12 away), `near-edge` (aimed at an
 //! edge, then moved by up to 2 ulps), `grazing` (origins within 10^-12 to
 //! 10^-4 of the plane), and `shared-edges`: rays aimed at the interior edges
@@ -21,12 +21,11 @@
 //! per ray–triangle test there too.
 
 use crate::framework::{Config, Measure, Row, median, method, note, time_methods};
-use crate::oracle;
-use crate::ray_cases::{self, TiledMesh};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::shape::Triangle;
-use exactray::testing::SplitMix64;
+use exactray::testing::{RayTriangleClass, TiledMesh, ray_triangle_case};
+use exactray_oracle::oracle;
 use glam::DVec3;
 use parry3d_f64::math::Vector as PVector;
 use parry3d_f64::query::{Ray as PRay, RayCast as PRayCast};
@@ -121,26 +120,16 @@ fn exact(c: &Case) -> Option<f64> {
         .map(|(num, den)| oracle::ratio_to_f64(&num, &den))
 }
 
-/// A generator of single-triangle cases.
-type Generate = fn(&mut SplitMix64) -> ray_cases::Case;
-
-/// The single-triangle inputs and their generators.
-const SINGLE: [(&str, Generate); 4] = [
-    ("uniform", ray_cases::uniform),
-    ("far", ray_cases::far),
-    ("near-edge", ray_cases::near_edge),
-    ("grazing", ray_cases::grazing),
-];
-
 pub fn run(cfg: &Config) -> Vec<Row> {
     let methods = methods();
     let checked = cfg.cases / 4;
     let mut rows = Vec::new();
     let mut medians = Vec::new();
-    for (inputs, generate) in SINGLE {
+    for class in RayTriangleClass::ALL {
+        let inputs = class.name();
         let mut rng = cfg.rng("ray_triangle", inputs);
         let cases: Vec<Case> = std::iter::repeat_with(|| {
-            let (o, d, v) = generate(&mut rng);
+            let (o, d, v) = ray_triangle_case(class, &mut rng);
             Case::new(o, d, v)
         })
         .flatten()

@@ -7,30 +7,6 @@ use exactray::testing::{InputClass, SplitMix64};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-/// What a float method's NaN counts as: never equal to an exact sign.
-pub const NAN: i8 = i8::MIN;
-
-/// The sign of a float result, with NaN as [`NAN`].
-pub fn sign_of(v: f64) -> i8 {
-    if v > 0.0 {
-        1
-    } else if v < 0.0 {
-        -1
-    } else if v == 0.0 {
-        0
-    } else {
-        NAN
-    }
-}
-
-/// Minus [`sign_of`], for peers whose convention is the opposite of ours.
-pub fn minus_sign_of(v: f64) -> i8 {
-    match sign_of(v) {
-        NAN => NAN,
-        s => -s,
-    }
-}
-
 /// A predicate's batch variant (`exactray::predicates::orient2d_many`, ...)
 /// as a [`Measure`]: the timed loop answers the whole slice of cases in one
 /// call per iteration, as a caller with many cases would.
@@ -111,19 +87,5 @@ impl<C> SignFamily<C> {
             }
         }
         rows
-    }
-}
-
-/// A point for the `robust` crate.
-pub fn coord(p: glam::DVec2) -> robust::Coord<f64> {
-    robust::Coord { x: p.x, y: p.y }
-}
-
-/// A 3D point for the `robust` crate.
-pub fn coord3(p: glam::DVec3) -> robust::Coord3D<f64> {
-    robust::Coord3D {
-        x: p.x,
-        y: p.y,
-        z: p.z,
     }
 }

@@ -14,11 +14,9 @@ use exactray::bvh::Nearest;
 use exactray::bvh::SphereBvh;
 use exactray::testing::finite_f64_from_bits;
 use exactray::testing::step_ulps;
+use exactray_oracle::oracle;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
-
-#[path = "../../tests/common/oracle.rs"]
-mod oracle;
 
 #[derive(Debug)]
 struct Case {

@@ -21,11 +21,9 @@ use exactray::testing::{
     finite_f64_from_bits,
 };
 use exactray::{InputError, Sign, predicates::SideRelation};
+use exactray_oracle::oracle;
 use glam::{DVec2, DVec3};
 use libfuzzer_sys::fuzz_target;
-
-#[path = "../../tests/common/oracle.rs"]
-mod oracle;
 
 #[derive(Clone, Copy, Debug)]
 enum Pred {

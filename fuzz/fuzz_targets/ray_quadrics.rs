@@ -13,14 +13,8 @@ use exactray::query::ray::RayCast;
 use exactray::roots::Roots;
 use exactray::shape::{Cylinder, Quadric, Sphere};
 use exactray::testing::finite_f64_from_bits;
+use exactray_oracle::line_oracle::{Quadratic, ulps_between};
 use libfuzzer_sys::fuzz_target;
-
-#[path = "../../tests/common/line_oracle.rs"]
-mod line_oracle;
-#[path = "../../tests/common/oracle.rs"]
-mod oracle;
-
-use line_oracle::{Quadratic, ulps_between};
 
 fuzz_target!(|input: (u8, [u64; 16])| {
     let (mode, bits) = input;

@@ -17,33 +17,25 @@ use exactray::interval::Interval;
 use exactray::query::ray::EXACT_T_ULPS;
 use exactray::query::ray::Ray;
 use exactray::shape::Triangle;
-use exactray::testing::SplitMix64;
 use exactray::testing::finite_f64_from_bits;
+use exactray::testing::{RayTriangleCase, RayTriangleClass, SplitMix64, ray_triangle_case};
+use exactray_oracle::oracle;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
-
-#[path = "../../tests/common/oracle.rs"]
-mod oracle;
-#[path = "../../tests/common/ray_cases.rs"]
-mod ray_cases;
 
 fn vec3(u: &mut Unstructured) -> arbitrary::Result<DVec3> {
     let b = <[u64; 3]>::arbitrary(u)?;
     Ok(DVec3::from_array(b.map(finite_f64_from_bits)))
 }
 
-fn case(u: &mut Unstructured) -> arbitrary::Result<ray_cases::Case> {
+fn case(u: &mut Unstructured) -> arbitrary::Result<RayTriangleCase> {
     let how = u8::arbitrary(u)?;
     if how % 2 == 0 {
         return Ok((vec3(u)?, vec3(u)?, [vec3(u)?, vec3(u)?, vec3(u)?]));
     }
     let mut rng = SplitMix64::new(u64::arbitrary(u)?);
-    let (mut o, mut d, mut v) = match (how / 2) % 4 {
-        0 => ray_cases::uniform(&mut rng),
-        1 => ray_cases::far(&mut rng),
-        2 => ray_cases::near_edge(&mut rng),
-        _ => ray_cases::grazing(&mut rng),
-    };
+    let class = RayTriangleClass::ALL[usize::from(how / 2) % 4];
+    let (mut o, mut d, mut v) = ray_triangle_case(class, &mut rng);
     let k = (how / 8 % 3) as usize;
     match u8::arbitrary(u)? % 5 {
         0 => d = v[k] - o,

@@ -9,10 +9,8 @@
 
 use exactray::roots::{Roots, solve_quadratic};
 use exactray::testing::finite_f64_from_bits;
+use exactray_oracle::oracle;
 use libfuzzer_sys::fuzz_target;
-
-#[path = "../../tests/common/oracle.rs"]
-mod oracle;
 
 fuzz_target!(|bits: [u64; 3]| {
     let [a, b, c] = bits.map(finite_f64_from_bits);

@@ -75,6 +75,34 @@ impl SplitMix64 {
         SplitMix64 { state: seed }
     }
 
+    /// The stream of one `(family, inputs)` pair of a report or a
+    /// benchmark (`("orient2d", "uniform")`): seeded by the FNV-1a hash of
+    /// `family/inputs`, so it is fixed, and independent of which other
+    /// streams are drawn.
+    ///
+    /// ```
+    /// use exactray::testing::SplitMix64;
+    /// let mut a = SplitMix64::for_inputs("ray_sphere", "far");
+    /// let mut b = SplitMix64::for_inputs("ray_sphere", "far");
+    /// assert_eq!(a.next_u64(), b.next_u64());
+    /// ```
+    pub fn for_inputs(family: &str, inputs: &str) -> Self {
+        Self::for_parts(family.as_bytes(), [inputs.as_bytes()])
+    }
+
+    /// [`for_inputs`](Self::for_inputs) with `inputs` the concatenation of
+    /// `parts`.
+    pub(super) fn for_parts<const N: usize>(family: &[u8], parts: [&[u8]; N]) -> Self {
+        let seed = family
+            .iter()
+            .chain(b"/")
+            .chain(parts.iter().flat_map(|p| p.iter()))
+            .fold(0xcbf2_9ce4_8422_2325u64, |h, &b| {
+                (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+            });
+        SplitMix64::new(seed)
+    }
+
     /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
         self.state = self.state.wrapping_add(0x9e37_79b9_7f4a_7c15);
@@ -359,7 +387,7 @@ fn scale(x: f64, k: i64) -> f64 {
 }
 
 /// `2^k` for `-1022 <= k <= 1023`.
-fn pow2(k: i64) -> f64 {
+pub(super) fn pow2(k: i64) -> f64 {
     f64::from_bits(((k + 1023) as u64) << 52)
 }
 

@@ -1,14 +1,27 @@
 //! Hard inputs for tests, benchmarks and fuzz targets: the crate's own and
-//! its users'. One door for three kinds of thing:
+//! its users'. One door for four kinds of thing:
 //!
 //! - deterministic generators of uniform, near-degenerate, degenerate,
 //!   tiny, huge and mixed-magnitude cases ([`InputClass`], [`SplitMix64`],
 //!   [`orient2d_case`], ...), the same on every platform for a seed;
+//! - deterministic hard rays: against one triangle ([`ray_triangle_case`]),
+//!   at the shared edges of a tiled mesh (`TiledMesh`, with `alloc`), and
+//!   against spheres, cylinders, cones and quadrics ([`sphere_ray_case`],
+//!   ...); point sets and queries for nearest-point searches
+//!   ([`nearest_points`]); triangles to rasterize
+//!   ([`raster_triangle_case`]);
 //! - one predicate call as a struct ([`Orient2dInput`], ...), with
 //!   `arbitrary::Arbitrary` under the `arbitrary` feature, every coordinate
 //!   a finite `f64` from a raw bit pattern ([`finite_f64_from_bits`]);
 //! - proptest strategies over both (`orient2d_inputs`, `finite_dvec3`, ...)
 //!   under the `proptest` feature.
+//!
+//! The ray, point-set and raster generators also call `pow`, `ln`, `cbrt`,
+//! `sin` or `cos`: `std`'s (the platform's) with the `std` feature,
+//! `libm`'s without it. Those need not round alike, so for those
+//! generators a seed names the same cases wherever those functions agree
+//! (every `std` build on one platform), and may differ in the last bit
+//! elsewhere.
 //!
 //! On the side of the floors: nothing in the library's queries imports it.
 //!
@@ -23,11 +36,18 @@
 //! ```
 
 mod cases;
+mod float;
 mod generators;
+mod pixels;
+mod points;
+mod rays;
 #[cfg(feature = "proptest")]
 mod strategies;
 
 pub use cases::*;
 pub use generators::*;
+pub use pixels::*;
+pub use points::*;
+pub use rays::*;
 #[cfg(feature = "proptest")]
 pub use strategies::*;

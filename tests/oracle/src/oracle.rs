@@ -5,9 +5,6 @@
 //! multiplies every coordinate by the same power of two; the predicates are
 //! homogeneous polynomials in the coordinates, so the sign of the integer
 //! polynomial is the sign of the exact real one. Integers are `num_bigint`.
-//!
-//! Shared by `tests/`, `fuzz/` and the report via `#[path]`.
-#![allow(dead_code)]
 
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
@@ -509,32 +506,4 @@ pub fn ulps_between(a: f64, b: f64) -> u64 {
         if bits < 0 { i64::MIN - bits } else { bits }
     };
     (ordered(a) as i128 - ordered(b) as i128).unsigned_abs() as u64
-}
-
-#[cfg(test)]
-mod oracle_self_test {
-    use super::*;
-
-    #[test]
-    fn conventions() {
-        assert_eq!(orient2d([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]), 1);
-        assert_eq!(
-            orient3d([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
-            1
-        );
-        assert_eq!(incircle([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, 0.0]), 1);
-        let t = ([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
-        assert_eq!(insphere(t.0, t.1, t.2, t.3, [0.25; 3]), 1);
-        assert_eq!(insphere(t.0, t.1, t.2, t.3, [1.0; 3]), 0);
-        assert_eq!(exact_parts(f64::from_bits(1)), (BigInt::from(1), -1074));
-        let (q, p) = ([0.0; 3], [1.0, 0.0, 0.0]);
-        assert_eq!(
-            compare_distance(q, p, [0.0, 0.0, -1.0]),
-            core::cmp::Ordering::Equal
-        );
-        assert_eq!(
-            compare_distance(q, p, [1.0, 1e-300, 0.0]),
-            core::cmp::Ordering::Less
-        );
-    }
 }

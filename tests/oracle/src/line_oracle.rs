@@ -2,9 +2,6 @@
 //! exact dyadic coefficients (every finite f64 is `m * 2^e`, and sums and
 //! products of dyadics are dyadic), its exact root count, and its roots
 //! rounded correctly to f64 by bisection on exact signs.
-//!
-//! Shared by `tests/`, `fuzz/` and the report via `#[path]`.
-#![allow(dead_code)]
 
 use super::oracle::exact_parts;
 use num_bigint::BigInt;

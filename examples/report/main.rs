@@ -9,56 +9,29 @@
 //! `report.json` and one `<family>.svg` per family.
 //!
 //! To add a family: a module under `examples/report/` and a line in
-//! [`FAMILIES`]. (A crate root looks for its modules beside itself, hence the
-//! `#[path]`s.)
+//! [`FAMILIES`]. The inputs come from `exactray::testing`, the exact answers
+//! from the `exactray-oracle` crate (`tests/oracle`).
 
-#[path = "../tests/common/line_oracle.rs"]
-mod line_oracle;
-#[path = "../tests/common/oracle.rs"]
-mod oracle;
-
-#[path = "report/framework.rs"]
 mod framework;
-#[path = "report/heap.rs"]
 mod heap;
-#[path = "report/output.rs"]
 mod output;
-#[path = "report/plot.rs"]
 mod plot;
-#[path = "report/ray_family.rs"]
 mod ray_family;
-#[path = "report/signs.rs"]
 mod signs;
-#[path = "report/targets.rs"]
 mod targets;
 
-#[path = "report/incircle.rs"]
 mod incircle;
-#[path = "report/insphere.rs"]
 mod insphere;
-#[path = "report/nearest.rs"]
 mod nearest;
-#[path = "report/nearest_build.rs"]
 mod nearest_build;
-#[path = "report/orient2d.rs"]
 mod orient2d;
-#[path = "report/orient3d.rs"]
 mod orient3d;
-#[path = "report/plane_side.rs"]
 mod plane_side;
-#[path = "report/raster_triangle.rs"]
 mod raster_triangle;
-#[path = "../tests/common/ray_cases.rs"]
-mod ray_cases;
-#[path = "report/ray_cone.rs"]
 mod ray_cone;
-#[path = "report/ray_cylinder.rs"]
 mod ray_cylinder;
-#[path = "report/ray_quadric.rs"]
 mod ray_quadric;
-#[path = "report/ray_sphere.rs"]
 mod ray_sphere;
-#[path = "report/ray_triangle.rs"]
 mod ray_triangle;
 
 use framework::{Config, Row};

@@ -1,0 +1,15 @@
+//! What exactray's speed-against-error report (`examples/report`) and its
+//! criterion benchmarks (`benches/`) both measure besides exactray's own
+//! calls, in one copy: the textbook `f64` formulas (`naive`), the peer
+//! crates' calls in exactray's sign conventions, and the per-pixel ray
+//! cast of the rasterizing family. A workspace member of its own
+//! (`publish = false`). Every function is `#[inline]`, so that it inlines
+//! into the callers' timed loops as a closure written there would.
+//!
+//! - [`signs`]: the predicates' signs, textbook and by the `robust` crate;
+//! - [`raster`]: the textbook rasterizer and one ray per pixel;
+//! - [`nearest`]: building and querying `kiddo`'s and `rstar`'s indexes.
+
+pub mod nearest;
+pub mod raster;
+pub mod signs;

@@ -1,3 +1,0 @@
-pub mod line_oracle;
-pub mod oracle;
-pub mod ray_cases;

@@ -1,0 +1,14 @@
+//! The exact oracle of exactray's tests, fuzz targets and report: answers
+//! in big integers and dyadics, independent of the crate's arithmetic, that
+//! the crate's answers are checked against.
+//!
+//! - [`oracle`]: predicate signs, distance orderings and nearest points,
+//!   polynomial and discriminant signs, the exact line–triangle crossing.
+//! - [`line_oracle`]: lines against spheres, cylinders, cones and general
+//!   quadrics: the exact root count and correctly rounded roots.
+//!
+//! A workspace member of its own (`publish = false`), so that every user
+//! depends on it by name.
+
+pub mod line_oracle;
+pub mod oracle;
