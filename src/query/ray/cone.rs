@@ -32,6 +32,82 @@ impl Cone {
         solve_quadratic(qa, 2.0 * qb, qc)
     }
 
+    /// A bound on the distance from a lateral root `t` (of the computed
+    /// quadratic) to a root of the exact polynomial, by an a-posteriori
+    /// bracket: the exact polynomial's sign is certified at `t - r` and
+    /// `t + r` and found opposite, so exactly one exact root lies between
+    /// them. Infinite where the certificate fails (near-tangent rays, where
+    /// two roots are close, and inputs beyond `2^150` in magnitude, where
+    /// the bounds below do not hold).
+    ///
+    /// Each coefficient is a polynomial in the exact inputs; computed with
+    /// at most `k` roundings on any term's path (`w` 1, `u = w x a` 3,
+    /// `v = d x a` 2, `p = w . a` 4, `q = d . a` 3, `s = a . a` 3; `qa` 10,
+    /// `qb` 13, `qc` 14), it is within `gamma(k)` of the same expression
+    /// over the terms' magnitudes (Higham, §3.1). The magnitudes are
+    /// themselves rounded (`k` more times), hence `gamma(2k)` of the
+    /// computed ones. A product that underflows loses at most `2^-1075`,
+    /// scaled by later factors below `2^300`: an absolute `SLACK` (below
+    /// `2^-697`) covers them.
+    fn lateral_t_error(&self, ray: &Ray, t: f64) -> f64 {
+        let (o, d, a, r) = (ray.origin(), ray.direction(), self.axis, self.radius);
+        let w = o - self.apex;
+        let limit = 2f64.powi(150);
+        let within = |v: DVec3| v.abs().max_element() < limit;
+        if !(within(w) && within(d) && within(a) && r < limit) {
+            return f64::INFINITY;
+        }
+        let (s, rr) = (a.dot(a), r * r);
+        let (u, v) = (w.cross(a), d.cross(a));
+        let (p, q) = (w.dot(a), d.dot(a));
+        let k = [
+            s * v.dot(v) - rr * q * q,
+            s * u.dot(v) - rr * p * q,
+            s * u.dot(u) - rr * p * p,
+        ];
+        let abs_cross = |x: DVec3, y: DVec3| {
+            let (x, y) = (x.abs(), y.abs());
+            DVec3::new(
+                x.y * y.z + x.z * y.y,
+                x.z * y.x + x.x * y.z,
+                x.x * y.y + x.y * y.x,
+            )
+        };
+        let (um, vm) = (abs_cross(w, a), abs_cross(d, a));
+        let (pm, qm) = (w.abs().dot(a.abs()), d.abs().dot(a.abs()));
+        const SLACK: f64 = 1.0e-210;
+        let e = [
+            gamma(20) * (s * vm.dot(vm) + rr * qm * qm) + SLACK,
+            gamma(26) * (s * um.dot(vm) + rr * pm * qm) + SLACK,
+            gamma(28) * (s * um.dot(um) + rr * pm * pm) + SLACK,
+        ];
+        // p(x) = (qa x + 2 qb) x + qc: Horner's roundings on the computed
+        // coefficients (gamma(5) of the terms' magnitudes, the doubling
+        // exact), and the coefficients' own errors, all with a margin.
+        let value = |x: f64| (k[0] * x + 2.0 * k[1]) * x + k[2];
+        let bound = |x: f64| {
+            let x2 = x * x;
+            (gamma(5) * (k[0].abs() * x2 + 2.0 * (k[1] * x).abs() + k[2].abs())
+                + e[0] * x2
+                + 2.0 * e[1] * x.abs()
+                + e[2])
+                * (1.0 + gamma(4))
+                + SLACK
+        };
+        let slope = 2.0 * (k[0] * t + k[1]);
+        let mut radius = 4.0 * bound(t) / slope.abs() + gamma(4) * t.abs();
+        for _ in 0..2 {
+            let (lo, hi) = ((t - radius).next_down(), (t + radius).next_up());
+            let (vl, vh) = (value(lo), value(hi));
+            if vl.abs() > bound(lo) && vh.abs() > bound(hi) && (vl < 0.0) != (vh < 0.0) {
+                // The exact root lies in (lo, hi).
+                return (t - lo).max(hi - t) * (1.0 + gamma(2));
+            }
+            radius *= 16.0;
+        }
+        f64::INFINITY
+    }
+
     /// The outward normal of the lateral surface at `x`: the gradient of
     /// `|a|^2 |w x a|^2 - r^2 (w . a)^2`.
     fn normal_at(&self, x: DVec3, fallback: DVec3) -> DVec3 {
@@ -71,7 +147,7 @@ impl RayCast for Cone {
             });
         // The base plane's level |a|^2 is `s` within gamma(4) of it, the
         // origin's height within its dot product's bound, and `num` rounds
-        // once more. The lateral roots carry no certified bound yet.
+        // once more. A lateral root's bound is its bracket's.
         let base_error = |t: f64, num: f64| {
             let e_h = dot_error(ray.origin() - self.apex, a);
             let e_num = e_h + gamma(4) * s + U * num.abs() * (1.0 + 2.0 * U);
@@ -81,7 +157,7 @@ impl RayCast for Cone {
             (Some(tl), Some((tb, num))) if tb < tl => (tb, base_error(tb, num), a.normalize()),
             (Some(tl), _) => (
                 tl,
-                f64::INFINITY,
+                self.lateral_t_error(ray, tl),
                 self.normal_at(ray.at(tl), -ray.direction()),
             ),
             (None, Some((tb, num))) => (tb, base_error(tb, num), a.normalize()),

@@ -102,7 +102,8 @@ pub struct Hit {
     /// a secondary ray needs to leave the surface (pbrt-v4's `pError`).
     /// Derived beside each shape's cast from the bound on its `t` (see
     /// `point_error.rs`); infinite where a cast's `t` carries no certified
-    /// bound (the cone's lateral surface, for now).
+    /// bound (a cone's side where its a-posteriori bracket fails: near
+    /// tangency, or inputs beyond `2^150` in magnitude).
     pub error: DVec3,
 }
 
