@@ -156,8 +156,15 @@ pub fn try_orient2d(
 /// Exact orientation of four 3D points: the sign of `det[b - a, c - a, d - a]`
 /// (CGAL's convention; the opposite of Shewchuk's, see the [module docs](self)).
 ///
-/// `Zero` when the four points are coplanar. Exact for every finite input. A
-/// NaN or infinite coordinate gives `Zero` (see [`try_orient3d`]).
+/// `Zero` when the four points are coplanar.
+///
+/// # Accuracy
+/// Exact for every finite input. A NaN or infinite coordinate gives `Zero`
+/// (see [`try_orient3d`]).
+///
+/// # Performance
+/// A filtered `f64` evaluation answers almost every input; the exact stages
+/// run only where its certified bound cannot (the README's figures).
 ///
 /// ```
 /// use exactray::prelude::*;
@@ -208,6 +215,8 @@ pub fn try_orient3d(
 /// when they are not collinear.
 ///
 /// It is the sign of `det[[ax-dx, ay-dy, |a-d|²], [bx-dx, ...], [cx-dx, ...]]`.
+///
+/// # Accuracy
 /// Exact for every finite input; a NaN or infinite coordinate gives `Zero`
 /// (see [`try_incircle`]).
 ///
@@ -259,8 +268,11 @@ pub fn try_incircle(
 /// `Zero` on the sphere. The sign flips with the orientation of `a, b, c, d`.
 ///
 /// It is the sign of `-det[[a-e, |a-e|²], [b-e, |b-e|²], [c-e, |c-e|²], [d-e, |d-e|²]]`
-/// (CGAL `side_of_oriented_sphere`). Exact for every finite input; a NaN or
-/// infinite coordinate gives `Zero` (see [`try_insphere`]).
+/// (CGAL `side_of_oriented_sphere`).
+///
+/// # Accuracy
+/// Exact for every finite input; a NaN or infinite coordinate gives `Zero`
+/// (see [`try_insphere`]).
 ///
 /// ```
 /// use exactray::prelude::*;
@@ -314,9 +326,12 @@ pub fn try_insphere(
 /// `|r - q|`, for every finite input (CGAL's `compare_distance_to_point`).
 ///
 /// `Less` when `p` is strictly closer to `q` than `r` is, `Equal` on an exact
-/// tie. Squared distances that underflow or overflow in `f64` are compared
-/// exactly all the same. A NaN or infinite coordinate gives `Equal` (see
-/// [`try_compare_distance`]).
+/// tie.
+///
+/// # Accuracy
+/// Exact: squared distances that underflow or overflow in `f64` are
+/// compared exactly all the same. A NaN or infinite coordinate gives
+/// `Equal` (see [`try_compare_distance`]).
 ///
 /// ```
 /// use exactray::predicates::compare_distance;

@@ -36,6 +36,8 @@ impl SideRelation {
 /// The side of the plane through triangle `x0, x1, x2` that `p` lies on:
 /// `orient3d(x0, x1, x2, p)`. `Positive` on the side from which `x0, x1, x2`
 /// appear counterclockwise; `Zero` on the plane or for a degenerate triangle.
+///
+/// # Accuracy
 /// Exact for every finite input; a NaN or infinite coordinate gives `Zero`.
 ///
 /// ```
