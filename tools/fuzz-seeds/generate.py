@@ -17,6 +17,11 @@ little-endian, fields in order):
 - ray_quadrics: a mode byte (0 sphere, 1 cylinder, 5 quadric: bit 1 clear
   means raw bit patterns), then 16 u64 bit patterns.
 - roots: 3 u64 bit patterns (a, b, c).
+- predicates: a selector byte (predicate = selector % 5, mode = selector / 5
+  % 4: 2 takes a case from the library's hard generators, 3 the same with
+  edits that may plant a NaN or an infinity), an input-class byte (% 6:
+  uniform, near-degenerate, degenerate, tiny, huge, mixed), a u64 generator
+  seed, then an edit-count byte and the edits' bytes.
 """
 import hashlib
 import random
@@ -95,6 +100,18 @@ def roots_cases(rng):
         yield b"".join(struct.pack("<Q", bits(x)) for x in (a, b, c))
 
 
+def predicate_cases(rng):
+    # Every predicate and input class from the library's generators, plain
+    # and with a few random edits (ulp nudges, shared coordinates, points on
+    # the line or plane of others, scalings), sometimes with NaN edits.
+    while True:
+        pred, cls = rng.randrange(5), rng.randrange(6)
+        mode = rng.choice([2, 2, 2, 3])
+        edits = rng.randrange(4)
+        tail = bytes(rng.randrange(256) for _ in range(12 * edits))
+        yield bytes([pred + 5 * mode, cls]) + struct.pack("<Q", rng.getrandbits(64)) + bytes([edits]) + tail
+
+
 def corpus(name, cases, seed):
     rng = random.Random(seed)
     out = {}
@@ -109,7 +126,8 @@ def main() -> int:
     stale = 0
     for name, files in [corpus("ray_triangle", triangle_cases, 12),
                         corpus("ray_quadrics", quadric_cases, 13),
-                        corpus("roots", roots_cases, 14)]:
+                        corpus("roots", roots_cases, 14),
+                        corpus("predicates", predicate_cases, 15)]:
         folder = ROOT / name
         have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
         if check:
