@@ -439,34 +439,7 @@ fn triangle_validation() {
 /// `cast_exact` once reported as a hit at `t = inf`.
 #[test]
 fn mixed_subnormal_and_huge_coordinates() {
-    let b = f64::from_bits;
-    let o = DVec3::new(
-        b(0x0000000000001348),
-        b(0x482b488eb0a3bf00),
-        b(0x0000000025000048),
-    );
-    let d = DVec3::new(
-        b(0x0000000012000000),
-        b(0x0000000000000000),
-        b(0x000000d100000000),
-    );
-    let v = [
-        DVec3::new(
-            b(0x060000000a000000),
-            b(0x25fd166cffd81300),
-            b(0x4848486840c729fe),
-        ),
-        DVec3::new(
-            b(0x0000545454544848),
-            b(0x0000000000393b00),
-            b(0x00250600002f0000),
-        ),
-        DVec3::new(
-            b(0x5454545454000000),
-            b(0x5454545054545454),
-            b(0x4854000ccf0a5454),
-        ),
-    ];
+    let (o, d, v) = exactray::testing::ray_triangle_finding(0).expect("issue 12's finding");
     for range in [
         Interval::FORWARD,
         Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap(),

@@ -112,6 +112,35 @@ fn aim(rng: &mut SplitMix64, v: &[DVec3; 3], lo: f64, hi: f64) -> DVec3 {
     v[0] + (v[1] - v[0]) * u + (v[2] - v[0]) * w
 }
 
+/// Fuzzer findings against the exact ray–triangle cast, as bit patterns
+/// (origin, direction, vertices): kept so every suite can replay them.
+///
+/// - Issue 12: subnormal, tiny and huge coordinates in one case, a
+///   direction whose largest coordinate is subnormal and an exact `t` near
+///   `2^1177`; the filter's bound once underflowed to zero there.
+pub const RAY_TRIANGLE_FINDINGS: [([u64; 3], [u64; 3], [[u64; 3]; 3]); 1] = [(
+    [0x0000000000001348, 0x482b488eb0a3bf00, 0x0000000025000048],
+    [0x0000000012000000, 0x0000000000000000, 0x000000d100000000],
+    [
+        [0x060000000a000000, 0x25fd166cffd81300, 0x4848486840c729fe],
+        [0x0000545454544848, 0x0000000000393b00, 0x00250600002f0000],
+        [0x5454545454000000, 0x5454545054545454, 0x4854000ccf0a5454],
+    ],
+)];
+
+/// [`RAY_TRIANGLE_FINDINGS`]`[i]` as a case, or `None` past the end.
+pub fn ray_triangle_finding(i: usize) -> Option<RayTriangleCase> {
+    let (o, d, v) = RAY_TRIANGLE_FINDINGS.get(i)?;
+    let p = |b: &[u64; 3]| {
+        DVec3::new(
+            f64::from_bits(b[0]),
+            f64::from_bits(b[1]),
+            f64::from_bits(b[2]),
+        )
+    };
+    Some((p(o), p(d), v.map(|b| p(&b))))
+}
+
 /// One ray–triangle case of `class`.
 pub fn ray_triangle_case(class: RayTriangleClass, rng: &mut SplitMix64) -> RayTriangleCase {
     let v = [0; 3].map(|_| point(rng, 1.0));

@@ -596,27 +596,7 @@ mod tests {
     #[test]
     fn certified_signs_are_exact_for_subnormal_directions() {
         let b = f64::from_bits;
-        let finding = (
-            DVec3::new(b(0x1348), b(0x482b488eb0a3bf00), b(0x25000048)),
-            DVec3::new(b(0x12000000), 0.0, b(0x000000d100000000)),
-            [
-                DVec3::new(
-                    b(0x060000000a000000),
-                    b(0x25fd166cffd81300),
-                    b(0x4848486840c729fe),
-                ),
-                DVec3::new(
-                    b(0x0000545454544848),
-                    b(0x0000000000393b00),
-                    b(0x00250600002f0000),
-                ),
-                DVec3::new(
-                    b(0x5454545454000000),
-                    b(0x5454545054545454),
-                    b(0x4854000ccf0a5454),
-                ),
-            ],
-        );
+        let finding = crate::testing::ray_triangle_finding(0).expect("issue 12's finding");
         let big = crate::arith::exponent::pow2(200);
         let well_shaped = (
             DVec3::ZERO,
