@@ -112,13 +112,16 @@ fn aim(rng: &mut SplitMix64, v: &[DVec3; 3], lo: f64, hi: f64) -> DVec3 {
     v[0] + (v[1] - v[0]) * u + (v[2] - v[0]) * w
 }
 
+/// A ray–triangle case as bit patterns: origin, direction, vertices.
+pub type RayTriangleBits = ([u64; 3], [u64; 3], [[u64; 3]; 3]);
+
 /// Fuzzer findings against the exact ray–triangle cast, as bit patterns
 /// (origin, direction, vertices): kept so every suite can replay them.
 ///
 /// - Issue 12: subnormal, tiny and huge coordinates in one case, a
 ///   direction whose largest coordinate is subnormal and an exact `t` near
 ///   `2^1177`; the filter's bound once underflowed to zero there.
-pub const RAY_TRIANGLE_FINDINGS: [([u64; 3], [u64; 3], [[u64; 3]; 3]); 1] = [(
+pub const RAY_TRIANGLE_FINDINGS: [RayTriangleBits; 1] = [(
     [0x0000000000001348, 0x482b488eb0a3bf00, 0x0000000025000048],
     [0x0000000012000000, 0x0000000000000000, 0x000000d100000000],
     [
