@@ -154,13 +154,17 @@ fn closest_hit_equals_brute_force() {
                     let want = brute(&tris, ray, range, test);
                     let got = match test {
                         Test::Watertight => mesh.closest_hit(ray, range),
-                        Test::Exact => mesh.closest_hit_with::<exactray::query::ray::Exact>(ray, range),
+                        Test::Exact => {
+                            mesh.closest_hit_with::<exactray::query::ray::Exact>(ray, range)
+                        }
                     };
                     let got_pair = got.map(|h| (h.triangle, h.hit.t));
                     assert_eq!(got_pair, want, "{}: {ray:?} {range:?} {test:?}", case.name);
                     let occluded = match test {
                         Test::Watertight => mesh.occluded(ray, range),
-                        Test::Exact => mesh.occluded_with::<exactray::query::ray::Exact>(ray, range),
+                        Test::Exact => {
+                            mesh.occluded_with::<exactray::query::ray::Exact>(ray, range)
+                        }
                     };
                     assert_eq!(occluded, want.is_some(), "{}: {ray:?} {test:?}", case.name);
                     if let Some(h) = got {
@@ -189,7 +193,11 @@ fn closest_hit_equals_brute_force() {
 fn occluded_between_is_the_segment() {
     let mut rng = SplitMix64::new(3);
     let tiled = TiledMesh::new(&mut rng, 8);
-    let triangles: Vec<[u32; 3]> = tiled.triangles.iter().map(|t| t.map(|i| i as u32)).collect();
+    let triangles: Vec<[u32; 3]> = tiled
+        .triangles
+        .iter()
+        .map(|t| t.map(|i| i as u32))
+        .collect();
     let mesh = TriangleMesh::new(&tiled.vertices, &triangles).unwrap();
     for _ in 0..1000 {
         let (x, y) = (1.0 + 6.0 * rng.next_f64(), 1.0 + 6.0 * rng.next_f64());
@@ -216,7 +224,9 @@ fn bad_input() {
     );
     let mesh = TriangleMesh::new(&v, &[[0, 1, 2]]).unwrap();
     assert_eq!(
-        mesh.clone().with_normals(&[[0.0, 0.0, 1.0]; 2]).unwrap_err(),
+        mesh.clone()
+            .with_normals(&[[0.0, 0.0, 1.0]; 2])
+            .unwrap_err(),
         InputError::LengthMismatch {
             expected: 3,
             got: 2
@@ -226,7 +236,9 @@ fn bad_input() {
         mesh.clone()
             .with_normals(&[[0.0, 0.0, 1.0], [0.0, f64::INFINITY, 1.0], [0.0, 0.0, 1.0]])
             .unwrap_err(),
-        InputError::NonFinite { argument: "normals" }
+        InputError::NonFinite {
+            argument: "normals"
+        }
     );
     assert_eq!(
         mesh.occluded_between([f64::NAN, 0.0, 0.0], [0.0; 3]),
@@ -266,7 +278,12 @@ fn bad_input() {
     // Degenerate triangles (a repeated vertex, collinear vertices) and an
     // empty mesh: never a hit.
     let flat = TriangleMesh::new(
-        &[[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 2.0, 0.0], [0.0, 2.0, 0.0]],
+        &[
+            [0.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [2.0, 2.0, 0.0],
+            [0.0, 2.0, 0.0],
+        ],
         &[[0, 1, 2], [0, 0, 3]],
     )
     .unwrap();

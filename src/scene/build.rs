@@ -43,10 +43,11 @@ impl Item {
 
 /// The union of the items' boxes (exact: min and max round nothing).
 fn bounds(items: &[Item]) -> (DVec3, DVec3) {
-    items.iter().fold(
-        (DVec3::INFINITY, DVec3::NEG_INFINITY),
-        |(lo, hi), it| (lo.min(it.min), hi.max(it.max)),
-    )
+    items
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), it| {
+            (lo.min(it.min), hi.max(it.max))
+        })
 }
 
 /// Half the surface area of a box (what the heuristic compares).
@@ -96,10 +97,11 @@ fn split(items: &mut [Item], min: DVec3, max: DVec3, depth: usize) -> Option<usi
     if n <= 1 {
         return None;
     }
-    let (cmin, cmax) = items.iter().fold(
-        (DVec3::INFINITY, DVec3::NEG_INFINITY),
-        |(lo, hi), it| (lo.min(it.center()), hi.max(it.center())),
-    );
+    let (cmin, cmax) = items
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), it| {
+            (lo.min(it.center()), hi.max(it.center()))
+        });
     let extent = cmax - cmin;
     let axis = if extent.x >= extent.y && extent.x >= extent.z {
         0

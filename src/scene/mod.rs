@@ -200,10 +200,7 @@ impl TriangleMesh {
     /// [`InputError::LengthMismatch`] (`expected` the vertex count) when
     /// the counts differ; [`InputError::NonFinite`] naming `"normals"` for
     /// a NaN or infinite coordinate.
-    pub fn with_normals<P: IntoDVec3>(
-        mut self,
-        normals: &[P],
-    ) -> Result<TriangleMesh, InputError> {
+    pub fn with_normals<P: IntoDVec3>(mut self, normals: &[P]) -> Result<TriangleMesh, InputError> {
         if normals.len() != self.vertices.len() {
             return Err(InputError::LengthMismatch {
                 expected: self.vertices.len(),
@@ -346,7 +343,11 @@ impl TriangleMesh {
     /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
     /// infinite coordinate, or `"direction"` when `q - p` overflows. `p ==
     /// q` is no segment: `Ok(false)`.
-    pub fn occluded_between(&self, p: impl IntoDVec3, q: impl IntoDVec3) -> Result<bool, InputError> {
+    pub fn occluded_between(
+        &self,
+        p: impl IntoDVec3,
+        q: impl IntoDVec3,
+    ) -> Result<bool, InputError> {
         let (p, q) = (p.into_dvec3(), q.into_dvec3());
         if !p.is_finite() {
             return Err(InputError::NonFinite { argument: "p" });

@@ -35,7 +35,11 @@ use glam::DVec3;
 fn offset_origin(hit: &Hit, w: DVec3) -> DVec3 {
     let n = hit.normal;
     let delta = n.abs().dot(hit.error) * (1.0 + gamma(8));
-    let offset = if w.dot(n) < 0.0 { -n * delta } else { n * delta };
+    let offset = if w.dot(n) < 0.0 {
+        -n * delta
+    } else {
+        n * delta
+    };
     let p = hit.point + offset;
     let away = |p: f64, o: f64| {
         if o > 0.0 {

@@ -571,9 +571,7 @@ impl RayCast for Triangle {
         // The certified plane parameter, not the watertight formula's `t`
         // (which carries no bound): the hit point's error follows from it.
         let t = plane_parameter(ray, &self.v);
-        range
-            .admits(t)
-            .then(|| Hit::at_plane_t(ray, t, normal))
+        range.admits(t).then(|| Hit::at_plane_t(ray, t, normal))
     }
 
     /// Whether [`RayCast::cast`] hits, without normalizing on a hit.
