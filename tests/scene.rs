@@ -8,7 +8,7 @@ use exactray::interval::Interval;
 use exactray::query::ray::{Ray, RayCast};
 use exactray::scene::{TriangleMesh, spawn_ray, spawn_ray_to};
 use exactray::shape::Triangle;
-use exactray::testing::{SplitMix64, TiledMesh};
+use exactray::testing::{SplitMix64, TiledMesh, unit_vector};
 use glam::DVec3;
 
 /// Which test a brute-force loop uses.
@@ -41,16 +41,6 @@ fn brute(tris: &[Triangle], ray: &Ray, range: Interval, test: Test) -> Option<(u
     best
 }
 
-fn unit(rng: &mut SplitMix64) -> DVec3 {
-    loop {
-        let v = DVec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 2.0 - 1.0;
-        let n = v.length();
-        if n > 0.1 && n <= 1.0 {
-            return v / n;
-        }
-    }
-}
-
 /// A mesh moved to `offset` and scaled by `scale` (rounded per vertex).
 struct Case {
     name: String,
@@ -64,10 +54,14 @@ fn soup(rng: &mut SplitMix64, n: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     for k in 0..n as u32 {
         let c = DVec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 4.0;
         let size = 0.05 + 0.5 * rng.next_f64();
-        let a = c + unit(rng) * size;
-        let b = c + unit(rng) * size;
+        let a = c + unit_vector(rng) * size;
+        let b = c + unit_vector(rng) * size;
         // Every tenth triangle degenerate: a repeated vertex.
-        let d = if k % 10 == 0 { a } else { c + unit(rng) * size };
+        let d = if k % 10 == 0 {
+            a
+        } else {
+            c + unit_vector(rng) * size
+        };
         vertices.extend([a, b, d]);
         triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
     }
@@ -128,7 +122,7 @@ fn rays(rng: &mut SplitMix64, case: &Case, n: usize) -> Vec<Ray> {
             1 => a,
             _ => a + (b - a) * 0.5,
         };
-        let origin = center + unit(rng) * (size * 2.0);
+        let origin = center + unit_vector(rng) * (size * 2.0);
         if let Ok(ray) = Ray::new(origin, target - origin) {
             out.push(ray);
         }

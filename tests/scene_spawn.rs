@@ -9,18 +9,8 @@
 use exactray::interval::Interval;
 use exactray::query::ray::{Hit, Ray, RayCast};
 use exactray::scene::{MeshHit, TriangleMesh, reflect, reflect_above, spawn_ray, spawn_ray_to};
-use exactray::testing::SplitMix64;
+use exactray::testing::{SplitMix64, unit_vector};
 use glam::DVec3;
-
-fn unit(rng: &mut SplitMix64) -> DVec3 {
-    loop {
-        let v = DVec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 2.0 - 1.0;
-        let n = v.length();
-        if n > 0.1 && n <= 1.0 {
-            return v / n;
-        }
-    }
-}
 
 /// A UV sphere of `rings` by `segments` quads (triangles at the poles),
 /// every triangle counterclockwise seen from outside, with the unit
@@ -92,7 +82,7 @@ fn tilted_plane(center: DVec3, size: f64, n: u32) -> (Vec<DVec3>, Vec<[u32; 3]>)
 
 /// A direction on `side`'s side at elevation angle `asin(s)`.
 fn at_elevation(rng: &mut SplitMix64, side: DVec3, s: f64) -> DVec3 {
-    let tangent = unit(rng)
+    let tangent = unit_vector(rng)
         .reject_from_normalized(side)
         .normalize_or(side.any_orthonormal_vector());
     tangent * (1.0 - s * s).sqrt() + side * s
@@ -186,7 +176,7 @@ fn situation(
             counts.self_hits += tri.cast(&to, range).is_some() as u64;
             let fixed = Ray::new(h.hit.point + side * 1e-8, w).unwrap();
             counts.epsilon_self_hits += tri.cast(&fixed, Interval::FORWARD).is_some() as u64;
-            if counts.secondary % 5 == 0 {
+            if counts.secondary.is_multiple_of(5) {
                 counts.blockers += 1;
                 counts.blockers_found += blocker_found(&ray, scale) as u64;
             }

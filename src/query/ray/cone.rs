@@ -52,7 +52,7 @@ impl Cone {
     fn lateral_t_error(&self, ray: &Ray, t: f64) -> f64 {
         let (o, d, a, r) = (ray.origin(), ray.direction(), self.axis, self.radius);
         let w = o - self.apex;
-        let limit = 2f64.powi(150);
+        let limit = crate::arith::exponent::pow2(150);
         let within = |v: DVec3| v.abs().max_element() < limit;
         if !(within(w) && within(d) && within(a) && r < limit) {
             return f64::INFINITY;
