@@ -192,9 +192,10 @@ impl TriangleMesh {
         Ok(mesh)
     }
 
-    /// The mesh with per-vertex `normals` (one per vertex, any length but
-    /// zero; they are interpolated then normalized, see
-    /// [`MeshHit::shading_normal`]).
+    /// The mesh with per-vertex `normals`, one per vertex, of any length
+    /// (they are interpolated, then normalized: see
+    /// [`MeshHit::shading_normal`]; a zero sum falls back to the geometric
+    /// normal).
     ///
     /// # Errors
     /// [`InputError::LengthMismatch`] (`expected` the vertex count) when

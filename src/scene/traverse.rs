@@ -171,3 +171,63 @@ pub(super) fn walk<V: Visitor>(bvh: &TriangleBvh, ray: &BoxRay, range: Interval,
         };
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn node(min: [f64; 3], max: [f64; 3]) -> Node {
+        Node {
+            min,
+            max,
+            link: 0,
+            count: 1,
+        }
+    }
+
+    /// Rays that touch the box only on a face, an edge or a corner, with
+    /// zero (and negative zero) direction coordinates whose slabs compute
+    /// `0 * inf = NaN`, and directions whose reciprocals overflow or are
+    /// subnormal (the dividing path), are kept; rays beside the box, or
+    /// whose range ends before it, are culled.
+    #[test]
+    fn slab_test_keeps_every_touching_ray() {
+        let unit = node([0.0; 3], [1.0; 3]);
+        let tiny = f64::from_bits(3);
+        let huge = f64::MAX / 2.0;
+        let keeps = [
+            // Along a face, an edge and a corner line, axis-aligned.
+            ([0.0, 0.5, -1.0], [0.0, 0.0, 1.0]),
+            ([0.0, 0.0, -1.0], [0.0, -0.0, 1.0]),
+            ([1.0, 1.0, 2.0], [-0.0, 0.0, -1.0]),
+            ([1.0, 1.0, 1.0], [-0.0, -0.0, -1.0]),
+            // Grazing a face with a subnormal coordinate (1/d overflows).
+            ([0.5, 1.0, -1.0], [0.0, -tiny, 1.0]),
+            // A huge coordinate (1/d subnormal): enters at t = 1 / huge.
+            ([-1.0, 0.5, 0.5], [huge, 0.0, 0.0]),
+            // Touching the corner (1, 1, 1) exactly at t = 1.
+            ([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0]),
+        ];
+        for (o, d) in keeps {
+            let ray = BoxRay::of(&Ray::new(o, d).unwrap());
+            assert!(ray.meets(&unit, 0.0, f64::INFINITY), "{o:?} {d:?}");
+        }
+        let culls = [
+            ([1.0 + 1e-9, 0.5, -1.0], [0.0, 0.0, 1.0], f64::INFINITY),
+            ([0.5, 0.5, -1.0], [0.0, 0.0, -1.0], f64::INFINITY),
+            ([0.5, 0.5, -1.0], [0.0, 0.0, 1.0], 0.5),
+            ([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0], 0.99),
+        ];
+        for (o, d, max) in culls {
+            let ray = BoxRay::of(&Ray::new(o, d).unwrap());
+            assert!(!ray.meets(&unit, 0.0, max), "{o:?} {d:?}");
+        }
+        // The touching corner ray with its range ending exactly at t = 1.
+        let corner = BoxRay::of(&Ray::new([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0]).unwrap());
+        assert!(corner.meets(&unit, 0.0, 1.0));
+        // Which path each direction takes.
+        let divides = |d: [f64; 3]| BoxRay::of(&Ray::new([0.0; 3], d).unwrap()).divide;
+        assert!(divides([0.0, -tiny, 1.0]) && divides([huge, 0.0, 0.0]));
+        assert!(!divides([0.0, -0.0, 1.0]) && !divides([-1.0, 2.0, 1e300]));
+    }
+}
