@@ -83,6 +83,14 @@ impl BoxRay {
     /// (never `false` when it does; see the module docs).
     #[inline]
     pub(super) fn meets(&self, node: &Node, min: f64, max: f64) -> bool {
+        self.entry(node, min, max).is_some()
+    }
+
+    /// The widened entry parameter of the box when the exact segment
+    /// `[min, max]` of the ray may meet it (always when it does; see the
+    /// module docs), `None` when it certainly does not.
+    #[inline]
+    pub(super) fn entry(&self, node: &Node, min: f64, max: f64) -> Option<f64> {
         let (mut near, mut far) = (min, max);
         for k in 0..3 {
             let (a, b) = (node.min[k] - self.origin[k], node.max[k] - self.origin[k]);
@@ -97,9 +105,10 @@ impl BoxRay {
             far = far.min(hi);
         }
         if near == f64::INFINITY {
-            return false;
+            return None;
         }
-        near - (WIDEN * near.abs() + SLACK) <= far + (WIDEN * far.abs() + SLACK)
+        let lower = near - (WIDEN * near.abs() + SLACK);
+        (lower <= far + (WIDEN * far.abs() + SLACK)).then_some(lower)
     }
 }
 
@@ -113,7 +122,7 @@ pub(super) trait Visitor {
 }
 
 /// Walks every leaf whose box the ray's exact segment `[range.min,
-/// visitor.max()]` meets, children in their stored order. The stack holds
+/// visitor.max()]` meets, the child of the smaller entry first. The stack holds
 /// one pending child per level: [`MAX_DEPTH`] entries, which the builder's
 /// depth bound never exceeds.
 pub(super) fn walk<V: Visitor>(bvh: &TriangleBvh, ray: &BoxRay, range: Interval, v: &mut V) {
@@ -139,21 +148,22 @@ pub(super) fn walk<V: Visitor>(bvh: &TriangleBvh, ray: &BoxRay, range: Interval,
         } else {
             let (a, b) = (at + 1, node.link as usize);
             let max = v.max();
-            let (ha, hb) = (
-                ray.meets(&bvh.nodes[a], lo, max),
-                ray.meets(&bvh.nodes[b], lo, max),
+            let (ea, eb) = (
+                ray.entry(&bvh.nodes[a], lo, max),
+                ray.entry(&bvh.nodes[b], lo, max),
             );
-            match (ha, hb) {
-                (true, true) => {
+            match (ea, eb) {
+                (Some(ta), Some(tb)) => {
+                    let (near, far) = if tb < ta { (b, a) } else { (a, b) };
                     // The builder bounds the depth below MAX_DEPTH, so a
                     // slot is always free (see `build.rs`).
-                    stack[top] = b as u32;
+                    stack[top] = far as u32;
                     top += 1;
-                    Some(a)
+                    Some(near)
                 }
-                (true, false) => Some(a),
-                (false, true) => Some(b),
-                (false, false) => None,
+                (Some(_), None) => Some(a),
+                (None, Some(_)) => Some(b),
+                (None, None) => None,
             }
         };
         at = match next {
