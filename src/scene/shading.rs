@@ -61,6 +61,16 @@ fn certainly_above(r: DVec3, n: DVec3) -> bool {
 /// `ensure_valid_specular_reflection` instead bends the shading normal
 /// towards the geometric one in closed form so that the reflection stays a
 /// small angle above the surface.
+///
+/// ```
+/// use exactray::scene::{reflect, reflect_above};
+/// use glam::DVec3;
+/// // A grazing ray on a flat face whose shading normal leans 45 degrees.
+/// let (d, ng) = (DVec3::new(1.0, 0.0, -0.1), DVec3::Z);
+/// let ns = DVec3::new(1.0, 0.0, 1.0).normalize();
+/// assert!(reflect(d, ns).z < 0.0); // into the object
+/// assert!(reflect_above(d, ns, ng).z > 0.0);
+/// ```
 pub fn reflect_above(d: DVec3, shading: DVec3, geometric: DVec3) -> DVec3 {
     let side = if d.dot(geometric) > 0.0 {
         -geometric

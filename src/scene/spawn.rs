@@ -83,6 +83,20 @@ pub fn spawn_ray(hit: &Hit, direction: impl IntoDVec3) -> Result<Ray, InputError
 /// rounding of that surface at `t` near 1: offset it too (spawn from both
 /// ends) where that matters.
 ///
+/// ```
+/// use exactray::prelude::*;
+/// let vertices = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// let mesh = TriangleMesh::new(&vertices, &[[0, 1, 2]]).unwrap();
+/// let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
+/// let hit = mesh.closest_hit(&ray, Interval::FORWARD).unwrap().hit;
+/// // A light above is visible; one below, behind the triangle, is not
+/// // blocked by the triangle the ray leaves either.
+/// let (shadow, range) = spawn_ray_to(&hit, [0.5, 0.5, 2.0]).unwrap();
+/// assert!(!mesh.occluded(&shadow, range));
+/// let (through, range) = spawn_ray_to(&hit, [0.1, 0.1, -2.0]).unwrap();
+/// assert!(!mesh.occluded(&through, range));
+/// ```
+///
 /// # Errors
 /// [`InputError::NonFinite`] naming `"point"` for a NaN or infinite
 /// point, `"origin"` for a hit whose error is infinite, `"direction"` when
