@@ -133,6 +133,9 @@ struct Counts {
     epsilon_self_hits: u64,
     blockers: u64,
     blockers_found: u64,
+    /// The largest offset of a spawned origin from its hit point, in units
+    /// of `2^-52` times the point's largest coordinate.
+    max_offset_ulps: f64,
 }
 
 /// For each primary hit, secondary rays leaving on the side the primary
@@ -166,6 +169,9 @@ fn situation(
         for w in dirs {
             counts.secondary += 1;
             let ray = spawn_ray(&h.hit, w).unwrap();
+            let moved = (ray.origin() - h.hit.point).abs().max_element();
+            let ulps = moved / (h.hit.point.abs().max_element() * f64::EPSILON);
+            counts.max_offset_ulps = counts.max_offset_ulps.max(ulps);
             let again = tri.cast(&ray, Interval::FORWARD).is_some();
             counts.self_hits += again as u64;
             if convex {
@@ -229,6 +235,7 @@ fn spawned_rays_never_hit_their_own_triangle() {
             total.epsilon_self_hits += c.epsilon_self_hits;
             total.blockers += c.blockers;
             total.blockers_found += c.blockers_found;
+            total.max_offset_ulps = total.max_offset_ulps.max(c.max_offset_ulps);
         }
     }
     for l in &lines {
