@@ -53,6 +53,14 @@ pub enum InputError {
         /// The largest number of items accepted.
         max: usize,
     },
+    /// An index into a slice (a mesh triangle's vertex index) is not below
+    /// the slice's length.
+    IndexOutOfRange {
+        /// The offending index.
+        index: usize,
+        /// The length of the slice it indexes.
+        len: usize,
+    },
 }
 
 impl fmt::Display for InputError {
@@ -76,6 +84,9 @@ impl fmt::Display for InputError {
                 write!(f, "slice lengths differ: {expected} and {got}")
             }
             InputError::TooManyItems { max } => write!(f, "more than {max} items"),
+            InputError::IndexOutOfRange { index, len } => {
+                write!(f, "index {index} out of range for length {len}")
+            }
         }
     }
 }

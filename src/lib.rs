@@ -17,6 +17,9 @@
 //!   triangle rasterization with exact pixel coverage.
 //! - [`bvh`] (with `alloc`): an exact nearest-point index over a hierarchy
 //!   of bounding spheres.
+//! - [`scene`] (with `alloc`): triangle meshes over a conservative BVH:
+//!   closest hits, shadow rays, secondary rays that never hit their own
+//!   surface, reflections that stay above it.
 //! - [`testing`]: hard inputs, proptest strategies and `Arbitrary` input
 //!   types for users' own tests; [`prelude`]: the vocabulary in one `use`.
 //!
@@ -35,7 +38,7 @@
 //! ```
 //!
 //! Features: `std` (default; implies `alloc`), `rayon` (default; parallel
-//! batch queries and builds of the index), `alloc` (the [`bvh`] module),
+//! batch queries and builds of the index), `alloc` (the [`bvh`] and [`scene`] modules),
 //! `proptest` (the strategies of [`testing`]), `arbitrary` (`Arbitrary` for
 //! the input types of [`testing`], for users' fuzz targets).
 //!
@@ -57,6 +60,8 @@ pub mod prelude;
 pub mod query;
 pub mod raster;
 pub mod roots;
+#[cfg(feature = "alloc")]
+pub mod scene;
 pub mod shape;
 mod sign;
 pub mod testing;

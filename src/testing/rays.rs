@@ -55,6 +55,12 @@ fn unit(rng: &mut SplitMix64) -> [f64; 3] {
     }
 }
 
+/// A unit vector, uniform on the sphere: directions for tests of rays
+/// and scenes.
+pub fn unit_vector(rng: &mut SplitMix64) -> DVec3 {
+    DVec3::from_array(unit(rng))
+}
+
 /// `10^x`.
 fn pow10(x: f64) -> f64 {
     powf(10.0, x)

@@ -119,6 +119,13 @@ impl Hit {
             error: point_error::point_error(ray, t, point, et),
         }
     }
+
+    /// The hit at a plane parameter within [`EXACT_T_ULPS`] of the exact
+    /// one (a triangle's certified `t`), with the point's error.
+    #[inline(always)]
+    pub(crate) fn at_plane_t(ray: &Ray, t: f64, normal: DVec3) -> Hit {
+        Hit::at(ray, t, point_error::exact_t_error(t), normal)
+    }
 }
 
 /// A shape a ray can be cast against.

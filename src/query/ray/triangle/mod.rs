@@ -24,7 +24,7 @@
 //! S. Woop, C. Benthin and I. Wald, "Watertight Ray/Triangle
 //! Intersection", Journal of Computer Graphics Techniques 2(1), 2013.
 
-use super::{Hit, RayCast, point_error};
+use super::{Hit, RayCast};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::magnitude::{larger, largest_magnitude};
 use crate::arith::roundoff::U;
@@ -571,9 +571,7 @@ impl RayCast for Triangle {
         // The certified plane parameter, not the watertight formula's `t`
         // (which carries no bound): the hit point's error follows from it.
         let t = plane_parameter(ray, &self.v);
-        range
-            .admits(t)
-            .then(|| Hit::at(ray, t, point_error::exact_t_error(t), normal))
+        range.admits(t).then(|| Hit::at_plane_t(ray, t, normal))
     }
 
     /// Whether [`RayCast::cast`] hits, without normalizing on a hit.

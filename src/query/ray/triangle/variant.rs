@@ -40,6 +40,17 @@ pub trait TriangleTest {
     /// The hit of `tri` in `range`, from the prepared ray. Never allocates;
     /// a degenerate triangle is a miss.
     fn hit(ray: &Self::Prepared, tri: &Triangle, range: Interval) -> Option<TriangleHit>;
+
+    /// The parameter where `ray`'s line crosses the plane of `tri`, within
+    /// [`EXACT_T_ULPS`](super::EXACT_T_ULPS) (4) units of rounding of the
+    /// exact one, for a `hit` this test returned: the exact variant's own
+    /// `t`, the others' recomputed (what `Triangle`'s `RayCast` reports).
+    /// NaN where the line is parallel to the plane.
+    #[inline]
+    fn certified_t(ray: &Ray, tri: &Triangle, hit: &TriangleHit) -> f64 {
+        let _ = hit;
+        super::plane_parameter(ray, &tri.v)
+    }
 }
 
 /// Möller–Trumbore ([`Triangle::cast_mt`]): nothing to prepare.
@@ -104,6 +115,12 @@ impl TriangleTest for Exact {
     #[inline]
     fn hit(ray: &Ray, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
         tri.cast_exact(ray, range)
+    }
+
+    /// The hit's own `t`: it is the plane parameter already.
+    #[inline]
+    fn certified_t(_ray: &Ray, _tri: &Triangle, hit: &TriangleHit) -> f64 {
+        hit.t
     }
 }
 

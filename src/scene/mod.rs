@@ -1,0 +1,489 @@
+//! Ray queries over triangle meshes (with `alloc`): [`TriangleMesh`], its
+//! closest hit ([`MeshHit`]) and shadow-ray queries over a bounding-volume
+//! hierarchy, secondary rays that leave a surface without hitting it again
+//! ([`spawn_ray`], [`spawn_ray_to`]), and reflections about shading
+//! normals that stay above the geometric surface ([`reflect_above`]).
+//!
+//! ```
+//! use exactray::prelude::*;
+//! use exactray::scene::{TriangleMesh, spawn_ray};
+//! // The unit square at z = 0, two triangles.
+//! let vertices = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+//! let mesh = TriangleMesh::new(&vertices, &[[0, 1, 2], [0, 2, 3]]).unwrap();
+//! let ray = Ray::new([0.25, 0.5, 1.0], [0.0, 0.0, -1.0]).unwrap();
+//! let hit = mesh.closest_hit(&ray, Interval::FORWARD).unwrap();
+//! assert_eq!((hit.triangle, hit.hit.t), (1, 1.0));
+//! // A ray spawned back up never meets the square again.
+//! let up = spawn_ray(&hit.hit, [0.3, 0.1, 1.0]).unwrap();
+//! assert!(!mesh.occluded(&up, Interval::FORWARD));
+//! ```
+//!
+//! # The hierarchy
+//! Built once by [`TriangleMesh::new`] with a binned surface-area
+//! heuristic (12 bins, leaves of up to [`LEAF`] triangles, depth at most
+//! [`MAX_DEPTH`]; `build.rs`). A node's box is the exact minimum and
+//! maximum of its triangles' vertices: no rounding. The slab test is
+//! widened by a derived bound so that it never culls a box that the ray's
+//! exact segment meets (`traverse.rs`), and a query walks with a fixed
+//! stack of [`MAX_DEPTH`] entries: no query allocates.
+//!
+//! # What a query decides
+//! A triangle is hit when the chosen [`TriangleTest`] hits it (the
+//! watertight test by default, [`Exact`] as an option) and the certified
+//! parameter of the crossing of its plane ([`TriangleTest::certified_t`],
+//! within 4 units of rounding of the exact one) is admitted by the range:
+//! the same rule as `Triangle`'s [`RayCast`]. The closest hit is the one
+//! with the least certified parameter, the lower triangle index on ties.
+//! Degenerate triangles, and triangles so thin that their rounded normal
+//! vanishes, are left out of the hierarchy: never hit.
+//!
+//! With [`Exact`], every hit is a crossing of the exact segment with the
+//! triangle, so its box is never culled and the queries equal a loop over
+//! every triangle. With [`Watertight`], a hit decided by rounding where the
+//! exact ray passes within rounding outside the triangle, next to a vertex
+//! that bounds the triangle's box, may be culled with the box (a loop over
+//! every triangle would report it).
+//!
+//! [`Exact`]: crate::query::ray::Exact
+//! [`Watertight`]: crate::query::ray::Watertight
+
+mod build;
+mod shading;
+mod spawn;
+mod traverse;
+
+pub use shading::{reflect, reflect_above};
+pub use spawn::{spawn_ray, spawn_ray_to};
+
+use crate::error::InputError;
+use crate::interval::Interval;
+use crate::point::IntoDVec3;
+use crate::query::ray::{Hit, Ray, RayCast, TriangleHit, TriangleTest, Watertight};
+use crate::shape::Triangle;
+use alloc::vec::Vec;
+use core::marker::PhantomData;
+use core::mem::size_of;
+use glam::DVec3;
+use traverse::{BoxRay, Visitor, walk};
+
+/// Most triangles in a leaf.
+pub const LEAF: usize = 4;
+
+/// The deepest a leaf lies below the root, plus one: the size of a query's
+/// stack (the builder's bound is 63; see `build.rs`).
+pub const MAX_DEPTH: usize = 64;
+
+/// Most triangles a mesh holds: `2^31`, so that the `2n - 1` nodes of its
+/// hierarchy are indexed by `u32`.
+pub const MAX_TRIANGLES: usize = 1 << 31;
+
+/// A node of the hierarchy, 56 bytes: its box (`min`, `max`, exact), and
+/// `count > 0` for a leaf holding the triangles `order[link .. link +
+/// count]`, or `count == 0` for an internal node whose first child is the
+/// next node (preorder) and whose second is `nodes[link]`.
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
+pub(crate) struct Node {
+    min: [f64; 3],
+    max: [f64; 3],
+    link: u32,
+    count: u32,
+}
+
+const _: () = assert!(size_of::<Node>() == 56);
+
+/// The hierarchy: nodes in preorder and the triangle indices in leaf
+/// order.
+#[derive(Clone, Debug)]
+struct TriangleBvh {
+    nodes: Vec<Node>,
+    order: Vec<u32>,
+}
+
+/// An indexed triangle mesh in `f64` with its hierarchy, ready for ray
+/// queries: vertices, `[u32; 3]` triangles, optional per-vertex normals.
+/// It stores only what its queries read (and nothing per triangle beyond
+/// its indices and its place in the hierarchy).
+#[derive(Clone, Debug)]
+pub struct TriangleMesh {
+    vertices: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
+    normals: Option<Vec<DVec3>>,
+    bvh: TriangleBvh,
+}
+
+/// The closest hit of a ray on a [`TriangleMesh`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshHit {
+    /// The index of the triangle hit, in the slice the mesh was built from.
+    pub triangle: u32,
+    /// The certified hit: its `t` the crossing of the triangle's plane
+    /// within 4 units of rounding of the exact one, the point `ray.at(t)`
+    /// with its certified per-axis `error`, and the unit geometric normal
+    /// `(v1 - v0) x (v2 - v0)` normalized (the front side, whichever side
+    /// the ray comes from).
+    pub hit: Hit,
+    /// The barycentric coordinate of the triangle's second vertex, from the
+    /// triangle test.
+    pub u: f64,
+    /// The barycentric coordinate of its third vertex.
+    pub v: f64,
+    /// For a mesh with normals, the unit shading normal: the vertex normals
+    /// interpolated with the barycentrics `(1 - u - v, u, v)` and
+    /// normalized (the geometric normal where that sum vanishes).
+    pub shading_normal: Option<DVec3>,
+}
+
+impl TriangleMesh {
+    /// The mesh of `vertices` (any [`IntoDVec3`]; `f32` widens exactly)
+    /// and `triangles` (indices into `vertices`), with its hierarchy built.
+    /// Degenerate triangles are accepted and never hit.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] naming `"vertices"` for a NaN or infinite
+    /// coordinate; [`InputError::IndexOutOfRange`] for an index not below
+    /// `vertices.len()`; [`InputError::TooManyItems`] for more than
+    /// [`MAX_TRIANGLES`] triangles.
+    pub fn new<P: IntoDVec3>(
+        vertices: &[P],
+        triangles: &[[u32; 3]],
+    ) -> Result<TriangleMesh, InputError> {
+        if triangles.len() > MAX_TRIANGLES {
+            return Err(InputError::TooManyItems { max: MAX_TRIANGLES });
+        }
+        let vertices: Vec<DVec3> = vertices.iter().map(|p| p.into_dvec3()).collect();
+        if !vertices.iter().all(|p| p.is_finite()) {
+            return Err(InputError::NonFinite {
+                argument: "vertices",
+            });
+        }
+        let len = vertices.len();
+        if let Some(&index) = triangles.iter().flatten().find(|&&i| i as usize >= len) {
+            return Err(InputError::IndexOutOfRange {
+                index: index as usize,
+                len,
+            });
+        }
+        let mut mesh = TriangleMesh {
+            vertices,
+            triangles: triangles.to_vec(),
+            normals: None,
+            bvh: TriangleBvh {
+                nodes: Vec::new(),
+                order: Vec::new(),
+            },
+        };
+        let items = (0..mesh.triangles.len() as u32)
+            .filter_map(|index| {
+                let tri = mesh.shape(index);
+                // Never hit: left out (see the module docs).
+                if tri.degenerate || tri.normal() == DVec3::ZERO {
+                    return None;
+                }
+                let [a, b, c] = tri.v;
+                Some(build::Item {
+                    min: a.min(b).min(c),
+                    max: a.max(b).max(c),
+                    index,
+                })
+            })
+            .collect();
+        mesh.bvh = build::build(items);
+        Ok(mesh)
+    }
+
+    /// The mesh with per-vertex `normals`, one per vertex, of any length
+    /// (they are interpolated, then normalized: see
+    /// [`MeshHit::shading_normal`]; a zero sum falls back to the geometric
+    /// normal).
+    ///
+    /// # Errors
+    /// [`InputError::LengthMismatch`] (`expected` the vertex count) when
+    /// the counts differ; [`InputError::NonFinite`] naming `"normals"` for
+    /// a NaN or infinite coordinate.
+    pub fn with_normals<P: IntoDVec3>(mut self, normals: &[P]) -> Result<TriangleMesh, InputError> {
+        if normals.len() != self.vertices.len() {
+            return Err(InputError::LengthMismatch {
+                expected: self.vertices.len(),
+                got: normals.len(),
+            });
+        }
+        let normals: Vec<DVec3> = normals.iter().map(|p| p.into_dvec3()).collect();
+        if !normals.iter().all(|n| n.is_finite()) {
+            return Err(InputError::NonFinite {
+                argument: "normals",
+            });
+        }
+        self.normals = Some(normals);
+        Ok(self)
+    }
+
+    /// The vertices.
+    #[inline]
+    pub fn vertices(&self) -> &[DVec3] {
+        &self.vertices
+    }
+
+    /// The triangles, as given.
+    #[inline]
+    pub fn triangles(&self) -> &[[u32; 3]] {
+        &self.triangles
+    }
+
+    /// The per-vertex normals, if any.
+    #[inline]
+    pub fn normals(&self) -> Option<&[DVec3]> {
+        self.normals.as_deref()
+    }
+
+    /// Triangle `index` as a shape, or `None` for an index not below
+    /// `triangles().len()`.
+    pub fn triangle(&self, index: usize) -> Option<Triangle> {
+        let i = u32::try_from(index).ok()?;
+        (index < self.triangles.len()).then(|| self.shape(i))
+    }
+
+    /// Triangle `index` (in range: every caller holds one from the mesh);
+    /// its degeneracy decided exactly, as `Triangle::new` does.
+    #[inline]
+    fn shape(&self, index: u32) -> Triangle {
+        let [a, b, c] = self.triangles[index as usize].map(|i| self.vertices[i as usize]);
+        // Finite: checked at construction.
+        Triangle::new(a, b, c).unwrap_or(Triangle {
+            v: [a, b, c],
+            degenerate: true,
+        })
+    }
+
+    /// Triangle `index` of the hierarchy (never degenerate: degenerate
+    /// ones are left out).
+    #[inline(always)]
+    fn leaf_shape(&self, index: u32) -> Triangle {
+        let v = self.triangles[index as usize].map(|i| self.vertices[i as usize]);
+        Triangle {
+            v,
+            degenerate: false,
+        }
+    }
+
+    /// The nodes of the hierarchy and the bytes it takes beside the mesh
+    /// (nodes and the leaf order), for tests and reports.
+    pub fn bvh_bytes(&self) -> usize {
+        self.bvh.nodes.len() * size_of::<Node>() + self.bvh.order.len() * size_of::<u32>()
+    }
+
+    /// The closest hit of `ray` for `t` in `range`, with the watertight
+    /// test ([`Watertight`]); see [`TriangleMesh::closest_hit_with`].
+    #[inline]
+    pub fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<MeshHit> {
+        self.closest_hit_with::<Watertight>(ray, range)
+    }
+
+    /// The closest hit of `ray` for `t` in `range` with the triangle test
+    /// `T` (the rule in the module docs), or `None`. Never allocates; every
+    /// `Ray` and `Interval` is valid input.
+    ///
+    /// A hit's `t` is certified, so its point's error is
+    /// ([`MeshHit::hit`]); the hit point and normal are computed once, for
+    /// the winner.
+    pub fn closest_hit_with<T: TriangleTest>(&self, ray: &Ray, range: Interval) -> Option<MeshHit> {
+        let mut v = Closest::<T> {
+            mesh: self,
+            ray,
+            prepared: T::prepare(ray),
+            range,
+            best: None,
+            test: PhantomData,
+        };
+        walk(&self.bvh, &BoxRay::of(ray), range, &mut v);
+        let (t, triangle, th) = v.best?;
+        let tri = self.leaf_shape(triangle);
+        let normal = tri.normal();
+        let shading_normal = self.normals.as_ref().map(|n| {
+            let [a, b, c] = self.triangles[triangle as usize].map(|i| n[i as usize]);
+            shading::interpolate(a, b, c, th.u, th.v, normal)
+        });
+        Some(MeshHit {
+            triangle,
+            hit: Hit::at_plane_t(ray, t, normal),
+            u: th.u,
+            v: th.v,
+            shading_normal,
+        })
+    }
+
+    /// Whether `ray` meets the mesh for some `t` in `range` (a shadow
+    /// ray's question), with the watertight test; see
+    /// [`TriangleMesh::occluded_with`].
+    #[inline]
+    pub fn occluded(&self, ray: &Ray, range: Interval) -> bool {
+        self.occluded_with::<Watertight>(ray, range)
+    }
+
+    /// Whether [`TriangleMesh::closest_hit_with`] would find a hit: the
+    /// walk stops at the first triangle hit. Never allocates.
+    pub fn occluded_with<T: TriangleTest>(&self, ray: &Ray, range: Interval) -> bool {
+        let mut v = AnyHit::<T> {
+            mesh: self,
+            ray,
+            prepared: T::prepare(ray),
+            range,
+            found: false,
+            test: PhantomData,
+        };
+        walk(&self.bvh, &BoxRay::of(ray), range, &mut v);
+        v.found
+    }
+
+    /// Whether the segment from `p` to `q` meets the mesh (watertight
+    /// test): the ray `p + t fl(q - p)` for `t` in `[0, 1]`, whose end is
+    /// `q` up to the rounding of the difference. Both ends count; to leave
+    /// a surface use [`spawn_ray_to`].
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
+    /// infinite coordinate, or `"direction"` when `q - p` overflows. `p ==
+    /// q` is no segment: `Ok(false)`.
+    pub fn occluded_between(
+        &self,
+        p: impl IntoDVec3,
+        q: impl IntoDVec3,
+    ) -> Result<bool, InputError> {
+        let (p, q) = (p.into_dvec3(), q.into_dvec3());
+        if !p.is_finite() {
+            return Err(InputError::NonFinite { argument: "p" });
+        }
+        if !q.is_finite() {
+            return Err(InputError::NonFinite { argument: "q" });
+        }
+        match Ray::new(p, q - p) {
+            Ok(ray) => Ok(self.occluded(&ray, Interval::new(0.0, 1.0)?)),
+            Err(InputError::ZeroDirection) => Ok(false),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+/// The hit of triangle `index` under the module's rule: the test's hit and
+/// its certified parameter, admitted by `range`.
+#[inline(always)]
+fn certified_hit<T: TriangleTest>(
+    mesh: &TriangleMesh,
+    ray: &Ray,
+    prepared: &T::Prepared,
+    range: Interval,
+    index: u32,
+) -> Option<(f64, TriangleHit)> {
+    let tri = mesh.leaf_shape(index);
+    let hit = T::hit(prepared, &tri, range)?;
+    let t = T::certified_t(ray, &tri, &hit);
+    range.admits(t).then_some((t, hit))
+}
+
+struct Closest<'a, T: TriangleTest> {
+    mesh: &'a TriangleMesh,
+    ray: &'a Ray,
+    prepared: T::Prepared,
+    range: Interval,
+    best: Option<(f64, u32, TriangleHit)>,
+    test: PhantomData<T>,
+}
+
+impl<T: TriangleTest> Visitor for Closest<'_, T> {
+    #[inline]
+    fn max(&self) -> f64 {
+        self.best.map_or(self.range.max(), |b| b.0)
+    }
+
+    #[inline]
+    fn leaf(&mut self, triangles: &[u32]) -> bool {
+        for &index in triangles {
+            if let Some((t, hit)) =
+                certified_hit::<T>(self.mesh, self.ray, &self.prepared, self.range, index)
+            {
+                let better = self
+                    .best
+                    .is_none_or(|(bt, bi, _)| t < bt || (t == bt && index < bi));
+                if better {
+                    self.best = Some((t, index, hit));
+                }
+            }
+        }
+        false
+    }
+}
+
+struct AnyHit<'a, T: TriangleTest> {
+    mesh: &'a TriangleMesh,
+    ray: &'a Ray,
+    prepared: T::Prepared,
+    range: Interval,
+    found: bool,
+    test: PhantomData<T>,
+}
+
+impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
+    #[inline]
+    fn max(&self) -> f64 {
+        self.range.max()
+    }
+
+    #[inline]
+    fn leaf(&mut self, triangles: &[u32]) -> bool {
+        self.found = triangles.iter().any(|&index| {
+            certified_hit::<T>(self.mesh, self.ray, &self.prepared, self.range, index).is_some()
+        });
+        self.found
+    }
+}
+
+impl RayCast for TriangleMesh {
+    /// [`TriangleMesh::closest_hit`]'s certified hit.
+    #[inline]
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        self.closest_hit(ray, range).map(|h| h.hit)
+    }
+
+    /// [`TriangleMesh::occluded`].
+    #[inline]
+    fn hits(&self, ray: &Ray, range: Interval) -> bool {
+        self.occluded(ray, range)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn depth(bvh: &TriangleBvh, at: usize) -> usize {
+        let n = &bvh.nodes[at];
+        if n.count > 0 {
+            1
+        } else {
+            1 + depth(bvh, at + 1).max(depth(bvh, n.link as usize))
+        }
+    }
+
+    /// The depth bound holds where the heuristic splits worst: triangles
+    /// whose centres grow geometrically (each split peels off a few), and
+    /// many identical triangles (no bin can split them).
+    #[test]
+    fn depth_stays_below_the_stack() {
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for k in 0..3000u32 {
+            let x = 1.5f64.powi(k as i32 % 1500);
+            vertices.extend([[x, 0.0, 0.0], [x, 1.0, 0.0], [x, 0.0, 1.0]]);
+            triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
+        }
+        for _ in 0..3000 {
+            triangles.push([0, 1, 2]);
+        }
+        let mesh = TriangleMesh::new(&vertices, &triangles).unwrap();
+        let d = depth(&mesh.bvh, 0);
+        assert!(d <= MAX_DEPTH && d > 10, "{d}");
+        let leaves = mesh.bvh.nodes.iter().filter(|n| n.count > 0);
+        assert!(leaves.clone().all(|n| n.count as usize <= LEAF));
+        assert_eq!(leaves.map(|n| n.count as usize).sum::<usize>(), 6000);
+    }
+}

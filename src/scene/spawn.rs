@@ -1,0 +1,113 @@
+//! Secondary rays that leave a surface: the origin moved off the hit point
+//! by its certified error (pbrt-v4's `OffsetRayOrigin`, Pharr, Jakob and
+//! Humphreys, *Physically Based Rendering*, 4th ed., §6.8.6), derived here
+//! for `f64`. No fixed epsilon: the offset is the hit's own error bound.
+//!
+//! # Derivation
+//! The exact crossing `x` lies in the box `p ± e` around the computed
+//! point `p` (`e` is [`Hit::error`], per axis). Every point of that box is
+//! within `δ = |n| . e = Σ |n_k| e_k` of the plane through `p` with unit
+//! normal `n`, measured along `n`, so `p + δ n` lies on `n`'s side of the
+//! plane through `x` (or on it). In `f64`:
+//!
+//! - `δ` is a dot product of three non-negative terms: three products and
+//!   two sums, `fl(δ) >= δ (1 - gamma(3))`; the offset `fl(fl(δ) n_k)`
+//!   loses one more rounding, and the computed normal has `|n|^2` within
+//!   `gamma(3)` of 1. Taking `δ' = fl(δ) (1 + gamma(8))` the offset moves the
+//!   point at least `δ` along `n`, to first order in `u`.
+//! - `fl(p_k + offset_k)` may round back towards the surface by half an
+//!   ulp; stepping every offset coordinate one ulp further away
+//!   (`next_up` for a positive offset, `next_down` for a negative one) puts
+//!   it at or beyond the exact `p_k + offset_k`.
+//!
+//! The offset goes to the side of the surface the new direction `w` points
+//! to: along `n` when `w . n >= 0`, along `-n` otherwise.
+
+use crate::arith::roundoff::gamma;
+use crate::error::InputError;
+use crate::interval::Interval;
+use crate::point::IntoDVec3;
+use crate::query::ray::{Hit, Ray};
+use glam::DVec3;
+
+/// The hit point moved off the surface, to the side `w` points to (see the
+/// module docs). Non-finite when the error is (an uncertified hit).
+fn offset_origin(hit: &Hit, w: DVec3) -> DVec3 {
+    let n = hit.normal;
+    let delta = n.abs().dot(hit.error) * (1.0 + gamma(8));
+    let offset = if w.dot(n) < 0.0 {
+        -n * delta
+    } else {
+        n * delta
+    };
+    let p = hit.point + offset;
+    let away = |p: f64, o: f64| {
+        if o > 0.0 {
+            p.next_up()
+        } else if o < 0.0 {
+            p.next_down()
+        } else {
+            p
+        }
+    };
+    DVec3::new(
+        away(p.x, offset.x),
+        away(p.y, offset.y),
+        away(p.z, offset.z),
+    )
+}
+
+/// A ray leaving the surface of `hit` along `direction`: its origin is the
+/// hit point moved off the surface by the hit's certified error, to the
+/// side `direction` points to, and rounded away from the surface (the
+/// module docs derive it), so the ray does not meet the surface it leaves
+/// again at the hit point. A direction tangent to the surface leaves on
+/// the normal's side.
+///
+/// # Errors
+/// As [`Ray::new`]: [`InputError::NonFinite`] naming `"direction"` for a
+/// NaN or infinite direction and `"origin"` for a hit whose error is
+/// infinite (no certified point to leave from);
+/// [`InputError::ZeroDirection`] for a zero direction.
+pub fn spawn_ray(hit: &Hit, direction: impl IntoDVec3) -> Result<Ray, InputError> {
+    let w = direction.into_dvec3();
+    Ray::new(offset_origin(hit, w), w)
+}
+
+/// A ray from the surface of `hit` towards `point`, and the parameter
+/// range `[0, 1)` that covers the segment up to the point (excluded: the
+/// largest double below 1 is the bound): a shadow ray. The origin is
+/// offset as by [`spawn_ray`], to the side the point lies on; the
+/// direction is `point - origin`, rounded, so `origin + direction` is
+/// `point` up to that rounding. A point on another surface is within
+/// rounding of that surface at `t` near 1: offset it too (spawn from both
+/// ends) where that matters.
+///
+/// ```
+/// use exactray::prelude::*;
+/// let vertices = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// let mesh = TriangleMesh::new(&vertices, &[[0, 1, 2]]).unwrap();
+/// let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
+/// let hit = mesh.closest_hit(&ray, Interval::FORWARD).unwrap().hit;
+/// // A light above is visible; one below, behind the triangle, is not
+/// // blocked by the triangle the ray leaves either.
+/// let (shadow, range) = spawn_ray_to(&hit, [0.5, 0.5, 2.0]).unwrap();
+/// assert!(!mesh.occluded(&shadow, range));
+/// let (through, range) = spawn_ray_to(&hit, [0.1, 0.1, -2.0]).unwrap();
+/// assert!(!mesh.occluded(&through, range));
+/// ```
+///
+/// # Errors
+/// [`InputError::NonFinite`] naming `"point"` for a NaN or infinite
+/// point, `"origin"` for a hit whose error is infinite, `"direction"` when
+/// the difference overflows; [`InputError::ZeroDirection`] when the point
+/// is the offset origin.
+pub fn spawn_ray_to(hit: &Hit, point: impl IntoDVec3) -> Result<(Ray, Interval), InputError> {
+    let q = point.into_dvec3();
+    if !q.is_finite() {
+        return Err(InputError::NonFinite { argument: "point" });
+    }
+    let origin = offset_origin(hit, q - hit.point);
+    let ray = Ray::new(origin, q - origin)?;
+    Ok((ray, Interval::new(0.0, 1.0f64.next_down())?))
+}
