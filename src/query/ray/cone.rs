@@ -120,11 +120,19 @@ impl Cone {
     }
 }
 
-impl RayCast for Cone {
-    /// The first hit in `range` on the cone's own nappe (`(x - apex) . axis
-    /// >= 0`), below the cap for a capped cone, or on the base disk (normal
-    /// `+axis`). Nappe, cap and rim membership are decided in `f64`.
-    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+/// Which surface of a cone a cast's first crossing lies on.
+#[derive(Clone, Copy)]
+enum Crossing {
+    /// The lateral surface, at `t`.
+    Lateral(f64),
+    /// The base disk, at `t = num / (d . a)`.
+    Base { t: f64, num: f64 },
+}
+
+impl Cone {
+    /// The first crossing in `range` on the cone's own nappe (below the cap
+    /// for a capped cone) or on its base disk.
+    fn first_crossing(&self, ray: &Ray, range: Interval) -> Option<Crossing> {
         let a = self.axis;
         let s = a.dot(a);
         let height = |t: f64| (ray.at(t) - self.apex).dot(a);
@@ -145,24 +153,44 @@ impl RayCast for Cone {
                 let radial = (ray.at(t) - self.apex).cross(a);
                 range.admits(t) && radial.dot(radial) <= self.radius * self.radius * s
             });
-        // The base plane's level |a|^2 is `s` within gamma(4) of it, the
-        // origin's height within its dot product's bound, and `num` rounds
-        // once more. A lateral root's bound is its bracket's.
-        let base_error = |t: f64, num: f64| {
-            let e_h = dot_error(ray.origin() - self.apex, a);
-            let e_num = e_h + gamma(4) * s + U * num.abs() * (1.0 + 2.0 * U);
-            quotient_t_error(t, e_num, dh, dot_error(ray.direction(), a))
-        };
-        let (t, et, normal) = match (lateral, base) {
-            (Some(tl), Some((tb, num))) if tb < tl => (tb, base_error(tb, num), a.normalize()),
-            (Some(tl), _) => (
-                tl,
-                self.lateral_t_error(ray, tl),
-                self.normal_at(ray.at(tl), -ray.direction()),
-            ),
-            (None, Some((tb, num))) => (tb, base_error(tb, num), a.normalize()),
-            (None, None) => return None,
-        };
-        Some(Hit::at(ray, t, et, normal))
+        match (lateral, base) {
+            (Some(tl), Some((tb, num))) if tb < tl => Some(Crossing::Base { t: tb, num }),
+            (Some(tl), _) => Some(Crossing::Lateral(tl)),
+            (None, Some((t, num))) => Some(Crossing::Base { t, num }),
+            (None, None) => None,
+        }
+    }
+}
+
+impl RayCast for Cone {
+    /// The first hit in `range` on the cone's own nappe (`(x - apex) . axis
+    /// >= 0`), below the cap for a capped cone, or on the base disk (normal
+    /// `+axis`). Nappe, cap and rim membership are decided in `f64`.
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let a = self.axis;
+        Some(match self.first_crossing(ray, range)? {
+            Crossing::Lateral(t) => {
+                let normal = self.normal_at(ray.at(t), -ray.direction());
+                Hit::at(ray, t, self.lateral_t_error(ray, t), normal)
+            }
+            Crossing::Base { t, num } => {
+                // The base plane's level |a|^2 is `s` within gamma(4) of it,
+                // the origin's height within its dot product's bound, and
+                // `num` rounds once more.
+                let e_h = dot_error(ray.origin() - self.apex, a);
+                let e_num = e_h + gamma(4) * a.dot(a) + U * num.abs() * (1.0 + 2.0 * U);
+                let dh = ray.direction().dot(a);
+                let et = quotient_t_error(t, e_num, dh, dot_error(ray.direction(), a));
+                Hit::at(ray, t, et, a.normalize())
+            }
+        })
+    }
+
+    /// [`RayCast::cast`]'s `t`, without its normal and point error (the
+    /// lateral root's bracket costs as much as the cast).
+    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
+        Some(match self.first_crossing(ray, range)? {
+            Crossing::Lateral(t) | Crossing::Base { t, .. } => t,
+        })
     }
 }
