@@ -578,3 +578,38 @@ fn cylinder_with_underflowing_radius_squared_and_huge_axis() {
     let (s, sd, sa) = (-510, -292, 306);
     cylinder_case(sc(o, s), sc(d, sd), sc(p, s), sc(a, sa), 0.01 * pow2(s)).unwrap();
 }
+
+/// A fuzzer finding (`ray_quadrics`, seed 7, from an empty corpus): an
+/// origin near `-f64::MAX`, direction coordinates from `1e-318` to `1e289`
+/// and coefficients `E = 5.5e-10`, `F = 8.4e-15`, `G = 2.1e-314`. The term
+/// `d_z E o_x` of `B` (`-9.7e-20`, its largest) underflowed in its partial
+/// product `d_z E` and vanished from the filter's sum and magnitude alike,
+/// which then certified no roots; there are two.
+#[test]
+fn partial_products_that_underflow_decline_the_filter() {
+    let v: [f64; 16] = [
+        -1.7976922809928584e308,
+        -1.7959812927113727e308,
+        6.392894393e-314,
+        5.014105033036297e-293,
+        -2.3159452160917045e289,
+        9.75167e-319,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        5.529727790709637e-10,
+        8.442919566090597e-15,
+        2.0970311356e-314,
+        0.0,
+        0.0,
+        0.0,
+    ];
+    let (o, d) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
+    let k: [f64; 10] = core::array::from_fn(|i| v[6 + i]);
+    let ray = Ray::new(o, d).unwrap();
+    let want = Quadratic::quadric(o, d, k).answer();
+    assert_eq!(want.count, Some(2));
+    check(Quadric::new(k).unwrap().line_roots(&ray), &want, "finding").unwrap();
+    check_first(&Quadric::new(k).unwrap(), &ray, &want, "finding").unwrap();
+}

@@ -83,6 +83,12 @@ def triangle_cases(rng):
 
 
 def quadric_cases(rng):
+    # A fuzzer finding: partial products that underflow (mode 8: a quadric
+    # from raw bit patterns).
+    yield packed(8, [-1.7976922809928584e308, -1.7959812927113727e308, 6.392894393e-314,
+                     5.014105033036297e-293, -2.3159452160917045e289, 9.75167e-319,
+                     0.0, 0.0, 0.0, 0.0, 5.529727790709637e-10, 8.442919566090597e-15,
+                     2.0970311356e-314, 0.0, 0.0, 0.0])
     while True:
         mode = rng.choice([0, 1, 5])
         values = [mixed(rng) for _ in range(16)]

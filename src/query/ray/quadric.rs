@@ -2,7 +2,7 @@
 
 use super::{Hit, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{two_prod, two_sum};
-use crate::arith::exponent::Grain;
+use crate::arith::exponent::{Grain, pow2};
 use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
@@ -100,8 +100,25 @@ impl<Q: Question> FmaKernel for Filtered<'_, Q> {
     }
 }
 
+/// Whether every factor of the terms `x_i (2Q)_ij y_j` is zero or within
+/// `2^±300` in magnitude: then no product of three (nor its double-double
+/// error term) leaves the normal range, every rounding is relative, and the
+/// filter's bounds hold. Outside it the filter declines. (A term whose
+/// partial product `x_i m_ij` underflowed was once lost from both the sum
+/// and its magnitude, and a wrong root count certified: a fuzzer finding,
+/// `tests/ray_quadrics.rs`.)
+#[inline(always)]
+fn factors_in_range(k: &[f64; 10], o: DVec3, d: DVec3) -> bool {
+    let (lo, hi) = (pow2(-300), pow2(300));
+    let ok = |v: f64| v == 0.0 || (lo..=hi).contains(&v.abs());
+    k.iter().all(|&v| ok(v)) && o.to_array().into_iter().chain(d.to_array()).all(ok)
+}
+
 #[inline(always)]
 fn filtered<Q: Question>(k: &[f64; 10], o: DVec3, d: DVec3, q: Q) -> Option<Q::Answer> {
+    if !factors_in_range(k, o, d) {
+        return None;
+    }
     let m = doubled_matrix(k);
     let x = [o.x, o.y, o.z, 1.0];
     let y = [d.x, d.y, d.z, 0.0];
