@@ -75,13 +75,46 @@ impl Interval {
     /// ```
     #[inline]
     pub fn admits(&self, t: f64) -> bool {
-        self.contains(t) && t.is_finite()
+        // `t` finite and in `[min, max]` is `t` in `[min, max]` clamped to
+        // the finite doubles (NaN fails either way): two comparisons with
+        // bounds that do not depend on `t`, so a loop over many casts with
+        // one interval computes them once.
+        let lo = self.min.max(-f64::MAX);
+        let hi = self.max.min(f64::MAX);
+        lo <= t && t <= hi
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `admits` is its definition, finite and contained, on every pair of
+    /// bounds and parameter drawn from the values where it could differ:
+    /// infinities, the largest finite doubles, zeros, NaN.
+    #[test]
+    fn admits_is_finite_and_contained() {
+        let edges = [
+            f64::NEG_INFINITY,
+            -f64::MAX,
+            -1.0,
+            -0.0,
+            0.0,
+            f64::from_bits(1),
+            1.0,
+            f64::MAX,
+            f64::INFINITY,
+        ];
+        for &min in &edges {
+            for &max in edges.iter().filter(|&&m| m >= min) {
+                let range = Interval::new(min, max).unwrap();
+                for t in edges.iter().copied().chain([f64::NAN]) {
+                    let want = range.contains(t) && t.is_finite();
+                    assert_eq!(range.admits(t), want, "[{min}, {max}] at {t}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn validation() {
