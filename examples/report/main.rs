@@ -33,6 +33,7 @@ mod ray_cylinder;
 mod ray_quadric;
 mod ray_sphere;
 mod ray_triangle;
+mod scene;
 
 use framework::{Config, Row};
 use std::time::Instant;
@@ -55,6 +56,9 @@ const FAMILIES: &[(&str, Family)] = &[
     ("ray_quadric", |cfg| ray_quadric::family().run(cfg)),
     ("ray_triangle", ray_triangle::run),
     ("raster_triangle", raster_triangle::run),
+    ("closest_hit", scene::run_closest),
+    ("any_hit", scene::run_any_hit),
+    ("spawn", scene::run_spawn),
 ];
 
 fn main() -> std::io::Result<()> {

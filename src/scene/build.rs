@@ -42,7 +42,7 @@ impl Item {
 }
 
 /// The union of the items' boxes (exact: min and max round nothing).
-fn bounds(items: &[Item]) -> (DVec3, DVec3) {
+pub(super) fn bounds(items: &[Item]) -> (DVec3, DVec3) {
     items
         .iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), it| {

@@ -48,10 +48,14 @@
 //! [`Watertight`]: crate::query::ray::Watertight
 
 mod build;
+#[cfg(feature = "std")]
+mod ploc;
 mod shading;
 mod spawn;
 mod traverse;
 
+#[cfg(feature = "std")]
+pub use ploc::PlocQuality;
 pub use shading::{reflect, reflect_above};
 pub use spawn::{spawn_ray, spawn_ray_to};
 
@@ -91,6 +95,48 @@ pub(crate) struct Node {
 }
 
 const _: () = assert!(size_of::<Node>() == 56);
+
+impl Node {
+    /// A box holding nothing (`min` above `max`), to grow.
+    const EMPTY: Node = Node {
+        min: [f64::INFINITY; 3],
+        max: [f64::NEG_INFINITY; 3],
+        link: 0,
+        count: 0,
+    };
+
+    /// Widens the box to hold `[min, max]` (exact: min and max round
+    /// nothing).
+    #[inline]
+    fn grow(&mut self, min: DVec3, max: DVec3) {
+        self.min = DVec3::from(self.min).min(min).to_array();
+        self.max = DVec3::from(self.max).max(max).to_array();
+    }
+}
+
+/// How [`TriangleMesh`] builds its hierarchy. Either way the boxes are
+/// exact and the queries' answers the same; the builders differ in the
+/// tree's shape, so in build and query time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum BvhBuilder {
+    /// The crate's own binned surface-area-heuristic builder (`build.rs`),
+    /// available without `std`.
+    BinnedSah,
+    /// obvhs's PLOC builder with reinsertion and leaf collapse (`std`),
+    /// falling back to [`BvhBuilder::BinnedSah`] for a tree deeper than
+    /// the walk's stack (see `ploc.rs`).
+    #[cfg(feature = "std")]
+    Ploc(PlocQuality),
+}
+
+impl Default for BvhBuilder {
+    /// The builder whose trees measured fastest to query (the report's
+    /// `closest_hit` family): see the README.
+    fn default() -> Self {
+        BvhBuilder::BinnedSah
+    }
+}
 
 /// The hierarchy: nodes in preorder and the triangle indices in leaf
 /// order.
@@ -148,6 +194,18 @@ impl TriangleMesh {
         vertices: &[P],
         triangles: &[[u32; 3]],
     ) -> Result<TriangleMesh, InputError> {
+        TriangleMesh::with_builder(vertices, triangles, BvhBuilder::default())
+    }
+
+    /// [`TriangleMesh::new`] with its hierarchy built by `builder`.
+    ///
+    /// # Errors
+    /// As [`TriangleMesh::new`].
+    pub fn with_builder<P: IntoDVec3>(
+        vertices: &[P],
+        triangles: &[[u32; 3]],
+        builder: BvhBuilder,
+    ) -> Result<TriangleMesh, InputError> {
         if triangles.len() > MAX_TRIANGLES {
             return Err(InputError::TooManyItems { max: MAX_TRIANGLES });
         }
@@ -173,7 +231,7 @@ impl TriangleMesh {
                 order: Vec::new(),
             },
         };
-        let items = (0..mesh.triangles.len() as u32)
+        let items: Vec<build::Item> = (0..mesh.triangles.len() as u32)
             .filter_map(|index| {
                 let tri = mesh.shape(index);
                 // Never hit: left out (see the module docs).
@@ -188,7 +246,13 @@ impl TriangleMesh {
                 })
             })
             .collect();
-        mesh.bvh = build::build(items);
+        mesh.bvh = match builder {
+            BvhBuilder::BinnedSah => build::build(items),
+            #[cfg(feature = "std")]
+            BvhBuilder::Ploc(quality) => {
+                ploc::build(&items, quality).unwrap_or_else(|| build::build(items))
+            }
+        };
         Ok(mesh)
     }
 

@@ -41,6 +41,8 @@ mod generators;
 mod pixels;
 mod points;
 mod rays;
+#[cfg(feature = "alloc")]
+mod scenes;
 #[cfg(feature = "proptest")]
 mod strategies;
 
@@ -49,5 +51,7 @@ pub use generators::*;
 pub use pixels::*;
 pub use points::*;
 pub use rays::*;
+#[cfg(feature = "alloc")]
+pub use scenes::*;
 #[cfg(feature = "proptest")]
 pub use strategies::*;
