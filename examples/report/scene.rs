@@ -19,7 +19,9 @@
 //!   correctly rounded exact `t`.
 //! - `any_hit` inputs: `shadow:N`, `terrain-shadow:N`, `room-shadow:N`:
 //!   from spawned primary hit points towards a point light. `errors`:
-//!   blocked or unblocked unlike the exact variant.
+//!   blocked or unblocked unlike the exact variant. `exactray-closest` is
+//!   the default closest-hit query on the same rays (what stopping at the
+//!   first blocker saves).
 //! - `spawn` inputs: situations on a displaced sphere (`diffuse`,
 //!   `reflect`, `grazing`, `far`, `tiny`, `huge`); methods `exactray`
 //!   (`spawn_ray`), `epsilon-1e-4`, `epsilon-1e-8` (the hit point moved by
@@ -243,8 +245,13 @@ fn closest_methods(s: &Arc<Setup>) -> Vec<Closest> {
 
 fn any_hit_methods(s: &Arc<Setup>) -> Vec<AnyHit> {
     let (a, b, c, d, e) = (s.clone(), s.clone(), s.clone(), s.clone(), s.clone());
+    let f = s.clone();
     let mut m: Vec<AnyHit> = vec![
         method("exactray", move |q: &Case| a.ours.occluded(&q.ray, q.range)),
+        // The closest hit on the same rays: what a shadow ray saves.
+        method("exactray-closest", move |q: &Case| {
+            f.ours.closest_hit(&q.ray, q.range).is_some()
+        }),
         method(other_builder().1, move |q: &Case| {
             b.other.occluded(&q.ray, q.range)
         }),
