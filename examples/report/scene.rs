@@ -88,14 +88,17 @@ impl Setup {
         );
         let (cw, b2) = obvhs
             .as_ref()
-            .map_or((f64::NAN, f64::NAN), |o| o.bytes_per_triangle());
+            .map_or(("-".to_string(), "-".to_string()), |o| {
+                let (cw, b2) = o.bytes_per_triangle();
+                (format!("{cw:.0}"), format!("{b2:.0}"))
+            });
         let ours_bytes = (ours.bvh_bytes() + n * 12 + data.vertices.len() * 24) as f64 / n as f64;
         note(
             "closest_hit",
             format!(
                 "{name} ({n} triangles): build exactray {:.0} ms, {} {:.0} ms, obvhs (CwBvh and Bvh2) {:.0} ms, parry3d {:.0} ms; \
-                 bytes per triangle: exactray {ours_bytes:.0} (f64 vertices, indices, hierarchy), obvhs CwBvh {cw:.0}, \
-                 Bvh2 {b2:.0} (f32 triangles, nodes, indices), parry3d {}",
+                 bytes per triangle: exactray {ours_bytes:.0} (f64 vertices, indices, hierarchy), obvhs CwBvh {cw}, \
+                 Bvh2 {b2} (f32 triangles, nodes, indices), parry3d {}",
                 built_ours.as_secs_f64() * 1e3,
                 other_builder().1,
                 built_other.as_secs_f64() * 1e3,
