@@ -349,18 +349,7 @@ impl TriangleMesh {
         p: impl IntoDVec3,
         q: impl IntoDVec3,
     ) -> Result<bool, InputError> {
-        let (p, q) = (p.into_dvec3(), q.into_dvec3());
-        if !p.is_finite() {
-            return Err(InputError::NonFinite { argument: "p" });
-        }
-        if !q.is_finite() {
-            return Err(InputError::NonFinite { argument: "q" });
-        }
-        match Ray::new(p, q - p) {
-            Ok(ray) => Ok(self.occluded(&ray, Interval::new(0.0, 1.0)?)),
-            Err(InputError::ZeroDirection) => Ok(false),
-            Err(e) => Err(e),
-        }
+        Ok(spawn::segment(p, q)?.is_some_and(|(ray, range)| self.occluded(&ray, range)))
     }
 }
 
