@@ -1,8 +1,12 @@
 //! Ray queries over triangle meshes (with `alloc`): [`TriangleMesh`], its
 //! closest hit ([`MeshHit`]) and shadow-ray queries over a bounding-volume
-//! hierarchy, secondary rays that leave a surface without hitting it again
-//! ([`spawn_ray`], [`spawn_ray_to`]), and reflections about shading
-//! normals that stay above the geometric surface ([`reflect_above`]).
+//! hierarchy; a [`Scene`] of meshes and analytic shapes, each with its
+//! [`PrimitiveId`], under a two-level hierarchy ([`SceneBuilder`],
+//! [`SceneHit`]; [`Scene`] says what its queries decide); batch
+//! forms of both, in parallel with rayon ([`BatchQueries`]); secondary
+//! rays that leave a surface without hitting it again ([`spawn_ray`],
+//! [`spawn_ray_to`]), and reflections about shading normals that stay
+//! above the geometric surface ([`reflect_above`]).
 //!
 //! ```
 //! use exactray::prelude::*;
@@ -47,11 +51,18 @@
 //! [`Exact`]: crate::query::ray::Exact
 //! [`Watertight`]: crate::query::ray::Watertight
 
+mod batch;
 mod build;
+mod primitives;
 mod shading;
 mod spawn;
 mod traverse;
 
+pub use batch::BatchQueries;
+pub use primitives::{
+    AnalyticShape, MAX_PRIMITIVES, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,
+    TrianglePoint,
+};
 pub use shading::{reflect, reflect_above};
 pub use spawn::{spawn_ray, spawn_ray_to};
 
