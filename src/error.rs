@@ -63,6 +63,21 @@ pub enum InputError {
     },
 }
 
+impl InputError {
+    /// `Ok` when a batch's two slices have the same length, else
+    /// [`InputError::LengthMismatch`] with `expected` the first's (the
+    /// batch queries of `bvh` and `scene`, with `alloc`).
+    #[cfg(feature = "alloc")]
+    #[inline]
+    pub(crate) fn check_lengths(expected: usize, got: usize) -> Result<(), InputError> {
+        if expected == got {
+            Ok(())
+        } else {
+            Err(InputError::LengthMismatch { expected, got })
+        }
+    }
+}
+
 impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

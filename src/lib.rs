@@ -17,9 +17,10 @@
 //!   triangle rasterization with exact pixel coverage.
 //! - [`bvh`] (with `alloc`): an exact nearest-point index over a hierarchy
 //!   of bounding spheres.
-//! - [`scene`] (with `alloc`): triangle meshes over a conservative BVH:
-//!   closest hits, shadow rays, secondary rays that never hit their own
-//!   surface, reflections that stay above it.
+//! - [`scene`] (with `alloc`): triangle meshes over a conservative BVH,
+//!   and scenes of meshes and analytic shapes over a two-level one:
+//!   closest hits, shadow rays, batches of both, secondary rays that never
+//!   hit their own surface, reflections that stay above it.
 //! - [`testing`]: hard inputs, proptest strategies and `Arbitrary` input
 //!   types for users' own tests; [`prelude`]: the vocabulary in one `use`.
 //!

@@ -22,7 +22,10 @@ pub use crate::predicates::{
 pub use crate::query::ray::{Hit, LineRoots, Ray, RayCast, TriangleHit};
 pub use crate::roots::{Roots, solve_quadratic, try_solve_quadratic};
 #[cfg(feature = "alloc")]
-pub use crate::scene::{MeshHit, TriangleMesh, spawn_ray, spawn_ray_to};
+pub use crate::scene::{
+    BatchQueries, MeshHit, PrimitiveId, Scene, SceneBuilder, SceneHit, TriangleMesh, spawn_ray,
+    spawn_ray_to,
+};
 pub use crate::shape::{
     Aabb, Bounded, CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere, Triangle,
 };

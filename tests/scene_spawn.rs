@@ -9,7 +9,7 @@
 use exactray::interval::Interval;
 use exactray::query::ray::{Hit, Ray, RayCast};
 use exactray::scene::{MeshHit, TriangleMesh, reflect, reflect_above, spawn_ray, spawn_ray_to};
-use exactray::testing::{SplitMix64, unit_vector};
+use exactray::testing::{SplitMix64, point_in_triangle, unit_vector};
 use glam::DVec3;
 
 /// A UV sphere of `rings` by `segments` quads (triangles at the poles),
@@ -98,14 +98,7 @@ fn elevation(rng: &mut SplitMix64) -> f64 {
 fn primary(rng: &mut SplitMix64, mesh: &TriangleMesh, scale: f64) -> Option<(MeshHit, DVec3)> {
     let k = (rng.next_u64() % mesh.triangles().len() as u64) as usize;
     let tri = mesh.triangle(k)?;
-    let [a, b, c] = tri.vertices();
-    let (u, v) = (rng.next_f64(), rng.next_f64());
-    let (u, v) = if u + v > 1.0 {
-        (1.0 - u, 1.0 - v)
-    } else {
-        (u, v)
-    };
-    let target = a + (b - a) * u + (c - a) * v;
+    let target = point_in_triangle(rng, tri.vertices());
     let n = tri.normal();
     if n == DVec3::ZERO {
         return None;

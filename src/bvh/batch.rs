@@ -26,7 +26,7 @@ impl SphereBvh {
         queries: &[DVec3],
         out: &mut [Option<Nearest>],
     ) -> Result<(), InputError> {
-        check_lengths(queries, out)?;
+        InputError::check_lengths(queries.len(), out.len())?;
         #[cfg(feature = "rayon")]
         {
             use rayon::prelude::*;
@@ -47,21 +47,10 @@ impl SphereBvh {
         queries: &[DVec3],
         out: &mut [Option<Nearest>],
     ) -> Result<(), InputError> {
-        check_lengths(queries, out)?;
+        InputError::check_lengths(queries.len(), out.len())?;
         for (q, o) in queries.iter().zip(out.iter_mut()) {
             *o = self.nearest(*q);
         }
         Ok(())
-    }
-}
-
-fn check_lengths(queries: &[DVec3], out: &[Option<Nearest>]) -> Result<(), InputError> {
-    if queries.len() == out.len() {
-        Ok(())
-    } else {
-        Err(InputError::LengthMismatch {
-            expected: queries.len(),
-            got: out.len(),
-        })
     }
 }

@@ -25,8 +25,9 @@ const BINS: usize = 12;
 /// Depth from which every split is a median split (see the module docs).
 const SAH_DEPTH: usize = 32;
 
-/// One triangle as the builder sees it: its exact box, its centre
-/// (rounded: only the split choice reads it) and its index in the mesh.
+/// One item as the builder sees it (a mesh's triangle, or a scene's
+/// primitive): its box, its centre (rounded: only the split choice reads
+/// it) and its index in the mesh (its id in the scene).
 #[derive(Clone, Copy)]
 pub(super) struct Item {
     pub min: DVec3,

@@ -1,8 +1,12 @@
 //! Ray queries over triangle meshes (with `alloc`): [`TriangleMesh`], its
 //! closest hit ([`MeshHit`]) and shadow-ray queries over a bounding-volume
-//! hierarchy, secondary rays that leave a surface without hitting it again
-//! ([`spawn_ray`], [`spawn_ray_to`]), and reflections about shading
-//! normals that stay above the geometric surface ([`reflect_above`]).
+//! hierarchy; a [`Scene`] of meshes and analytic shapes, each with its
+//! [`PrimitiveId`], under a two-level hierarchy ([`SceneBuilder`],
+//! [`SceneHit`]; [`Scene`] says what its queries decide); batch
+//! forms of both, in parallel with rayon ([`BatchQueries`]); secondary
+//! rays that leave a surface without hitting it again ([`spawn_ray`],
+//! [`spawn_ray_to`]), and reflections about shading normals that stay
+//! above the geometric surface ([`reflect_above`]).
 //!
 //! ```
 //! use exactray::prelude::*;
@@ -47,15 +51,22 @@
 //! [`Exact`]: crate::query::ray::Exact
 //! [`Watertight`]: crate::query::ray::Watertight
 
+mod batch;
 mod build;
 #[cfg(feature = "std")]
 mod ploc;
+mod primitives;
 mod shading;
 mod spawn;
 mod traverse;
 
+pub use batch::BatchQueries;
 #[cfg(feature = "std")]
 pub use ploc::PlocQuality;
+pub use primitives::{
+    AnalyticShape, MAX_PRIMITIVES, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,
+    TrianglePoint,
+};
 pub use shading::{reflect, reflect_above};
 pub use spawn::{spawn_ray, spawn_ray_to};
 
@@ -413,18 +424,7 @@ impl TriangleMesh {
         p: impl IntoDVec3,
         q: impl IntoDVec3,
     ) -> Result<bool, InputError> {
-        let (p, q) = (p.into_dvec3(), q.into_dvec3());
-        if !p.is_finite() {
-            return Err(InputError::NonFinite { argument: "p" });
-        }
-        if !q.is_finite() {
-            return Err(InputError::NonFinite { argument: "q" });
-        }
-        match Ray::new(p, q - p) {
-            Ok(ray) => Ok(self.occluded(&ray, Interval::new(0.0, 1.0)?)),
-            Err(InputError::ZeroDirection) => Ok(false),
-            Err(e) => Err(e),
-        }
+        Ok(spawn::segment(p, q)?.is_some_and(|(ray, range)| self.occluded(&ray, range)))
     }
 }
 

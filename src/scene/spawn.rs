@@ -111,3 +111,29 @@ pub fn spawn_ray_to(hit: &Hit, point: impl IntoDVec3) -> Result<(Ray, Interval),
     let ray = Ray::new(origin, q - origin)?;
     Ok((ray, Interval::new(0.0, 1.0f64.next_down())?))
 }
+
+/// The segment from `p` to `q` as the ray `p + t fl(q - p)` and the range
+/// `[0, 1]` (its end is `q` up to the rounding of the difference), or
+/// `None` for `p == q`: what `occluded_between` asks of a mesh or a
+/// scene.
+///
+/// # Errors
+/// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or infinite
+/// coordinate, or `"direction"` when `q - p` overflows.
+pub(super) fn segment(
+    p: impl IntoDVec3,
+    q: impl IntoDVec3,
+) -> Result<Option<(Ray, Interval)>, InputError> {
+    let (p, q) = (p.into_dvec3(), q.into_dvec3());
+    if !p.is_finite() {
+        return Err(InputError::NonFinite { argument: "p" });
+    }
+    if !q.is_finite() {
+        return Err(InputError::NonFinite { argument: "q" });
+    }
+    match Ray::new(p, q - p) {
+        Ok(ray) => Ok(Some((ray, Interval::new(0.0, 1.0)?))),
+        Err(InputError::ZeroDirection) => Ok(None),
+        Err(e) => Err(e),
+    }
+}

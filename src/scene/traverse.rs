@@ -123,8 +123,8 @@ impl BoxRay {
 pub(super) trait Visitor {
     /// The current upper bound of the parameters still wanted.
     fn max(&self) -> f64;
-    /// Looks at the triangles `order[start .. start + count]`; `true` stops
-    /// the walk.
+    /// Looks at a leaf's items `order[start .. start + count]` (a mesh's
+    /// triangles, a scene's primitives); `true` stops the walk.
     fn leaf(&mut self, triangles: &[u32]) -> bool;
 }
 

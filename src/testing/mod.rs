@@ -9,12 +9,17 @@
 //!   against spheres, cylinders, cones and quadrics ([`sphere_ray_case`],
 //!   ...); point sets and queries for nearest-point searches
 //!   ([`nearest_points`]); triangles to rasterize
-//!   ([`raster_triangle_case`]);
+//!   ([`raster_triangle_case`]); small scenes of meshes and every analytic
+//!   shape, rays for them and secondary rays spawned from their hits
+//!   (`random_scene`, `scene_ray`, `spawned_ray`, with `alloc`); large
+//!   generated meshes for scene benchmarks, a displaced sphere, a terrain
+//!   and a room, with camera rays (`displaced_sphere`, `terrain`, `room`,
+//!   `camera_rays`, with `alloc`);
 //! - one predicate call as a struct ([`Orient2dInput`], ...), with
 //!   `arbitrary::Arbitrary` under the `arbitrary` feature, every coordinate
 //!   a finite `f64` from a raw bit pattern ([`finite_f64_from_bits`]);
-//! - proptest strategies over both (`orient2d_inputs`, `finite_dvec3`, ...)
-//!   under the `proptest` feature.
+//! - proptest strategies over both (`orient2d_inputs`, `finite_dvec3`,
+//!   `small_scenes`, `spawned_rays`, ...) under the `proptest` feature.
 //!
 //! The ray, point-set and raster generators also call `pow`, `ln`, `cbrt`,
 //! `sin` or `cos`: `std`'s (the platform's) with the `std` feature,
@@ -38,6 +43,8 @@
 mod cases;
 mod float;
 mod generators;
+#[cfg(feature = "alloc")]
+mod meshes;
 mod pixels;
 mod points;
 mod rays;
@@ -48,6 +55,8 @@ mod strategies;
 
 pub use cases::*;
 pub use generators::*;
+#[cfg(feature = "alloc")]
+pub use meshes::*;
 pub use pixels::*;
 pub use points::*;
 pub use rays::*;

@@ -30,7 +30,7 @@ use super::generators::{SplitMix64, pow2, step_ulps};
 use glam::DVec3;
 
 /// Uniform in `[lo, hi)`.
-fn uniform(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
+pub(super) fn uniform(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
     lo + (hi - lo) * rng.next_f64()
 }
 
@@ -40,7 +40,7 @@ fn cube(rng: &mut SplitMix64, h: f64) -> [f64; 3] {
 }
 
 /// A point uniform in the cube `[-h, h]^3`, as a vector.
-fn point(rng: &mut SplitMix64, h: f64) -> DVec3 {
+pub(super) fn point(rng: &mut SplitMix64, h: f64) -> DVec3 {
     DVec3::from_array(cube(rng, h))
 }
 
@@ -59,6 +59,19 @@ fn unit(rng: &mut SplitMix64) -> [f64; 3] {
 /// and scenes.
 pub fn unit_vector(rng: &mut SplitMix64) -> DVec3 {
     DVec3::from_array(unit(rng))
+}
+
+/// A point of the triangle `[a, b, c]`, uniform over its area: `a + (b -
+/// a) u + (c - a) v` for `(u, v)` uniform in the unit square, folded into
+/// `u + v <= 1` (rounded).
+pub fn point_in_triangle(rng: &mut SplitMix64, [a, b, c]: [DVec3; 3]) -> DVec3 {
+    let (u, v) = (rng.next_f64(), rng.next_f64());
+    let (u, v) = if u + v > 1.0 {
+        (1.0 - u, 1.0 - v)
+    } else {
+        (u, v)
+    };
+    a + (b - a) * u + (c - a) * v
 }
 
 /// `10^x`.
@@ -242,6 +255,16 @@ mod mesh {
                 vertices,
                 triangles,
             }
+        }
+
+        /// The triangles as `u32` indices, as `TriangleMesh::new` takes
+        /// them (an index beyond `u32` becomes `u32::MAX`, which the mesh
+        /// refuses as out of range).
+        pub fn indices(&self) -> Vec<[u32; 3]> {
+            self.triangles
+                .iter()
+                .map(|t| t.map(|i| u32::try_from(i).unwrap_or(u32::MAX)))
+                .collect()
         }
 
         /// The vertices of triangle `k`.

@@ -1,365 +1,279 @@
-//! Triangle scenes generated in the crate (no download), for scene
-//! benchmarks and tests: a displaced sphere ([`displaced_sphere`]), a
-//! terrain ([`terrain`]) and a closed room with objects in it ([`room`]),
-//! each with smooth per-vertex normals, sized by a triangle budget; and
-//! camera rays looking at them ([`camera_rays`]).
+//! Deterministic small scenes and rays for them (with `alloc`): a mix of
+//! every analytic shape and small closed meshes with vertex normals, at a
+//! chosen scale and offset ([`random_scene`]); rays aimed at the
+//! primitives from outside or starting inside them ([`scene_ray`]); and
+//! secondary rays spawned from a hit ([`spawned_ray`]). The proptest
+//! strategies over them are `small_scenes` and `spawned_rays`.
 //!
 //! ```
-//! use exactray::testing::{SplitMix64, camera_rays, displaced_sphere};
-//! let mut rng = SplitMix64::new(1);
-//! let sphere = displaced_sphere(&mut rng, 2_000);
-//! assert!(sphere.triangles.len() <= 2_000);
-//! let rays = camera_rays(&sphere, 16, &mut rng);
-//! assert_eq!(rays.len(), 16);
+//! use exactray::prelude::*;
+//! use exactray::testing::{SplitMix64, random_scene, scene_ray};
+//! use glam::DVec3;
+//! let mut rng = SplitMix64::new(5);
+//! let scene = random_scene(&mut rng, 6, 1e-3, DVec3::new(1e8, 0.0, 0.0));
+//! let ray = scene_ray(&mut rng, &scene).unwrap();
+//! let _ = scene.closest_hit(&ray, Interval::FORWARD);
 //! ```
 
-use super::float::{cos, sin, sqrt};
+use super::float::{powf, sqrt};
 use super::generators::SplitMix64;
-use alloc::vec;
+use super::rays::{point, point_in_triangle, uniform, unit_vector};
+use crate::interval::Interval;
+use crate::query::ray::Ray;
+use crate::scene::{
+    AnalyticShape, Primitive, Scene, SceneBuilder, SceneHit, TriangleMesh, spawn_ray,
+};
+use crate::shape::{Aabb, Bounded, CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
 use alloc::vec::Vec;
-use core::f64::consts::PI;
 use glam::DVec3;
 
-/// An indexed triangle mesh with per-vertex normals (the area-weighted
-/// mean of the faces around each vertex, normalized), as plain data.
-#[derive(Clone, Debug)]
-pub struct SceneMesh {
-    /// The vertices.
-    pub vertices: Vec<DVec3>,
-    /// The triangles, counterclockwise seen from outside (from inside the
-    /// room), as indices into `vertices`.
-    pub triangles: Vec<[u32; 3]>,
-    /// One unit normal per vertex.
-    pub normals: Vec<DVec3>,
-}
+/// Scales and offsets `(scale, offset)` for [`random_scene`] (the offset
+/// along `(1, -0.7, 0.4)`): unit, tiny and huge scenes at the origin, and
+/// scenes `10^6` to `10^8` from it at unit and `1e-3` sizes. Not beyond
+/// `10^±40`: the casts of capped cylinders, disks and cones test their
+/// rims and nappes in `f64` with fourth and sixth powers of the
+/// coordinates, which underflow below about `10^-51` and overflow above
+/// `10^51`; there those casts report hits far outside their shapes.
+pub const SCENE_PLACES: [(f64, f64); 10] = [
+    (1.0, 0.0),
+    (1e-30, 0.0),
+    (1e-40, 0.0),
+    (1e30, 0.0),
+    (1e40, 0.0),
+    (1.0, 1e6),
+    (1.0, 1e7),
+    (1.0, 1e8),
+    (1e-3, 1e8),
+    (1e-3, 1e6),
+];
 
-impl SceneMesh {
-    fn new(vertices: Vec<DVec3>, triangles: Vec<[u32; 3]>) -> SceneMesh {
-        let normals = vertex_normals(&vertices, &triangles);
-        SceneMesh {
-            vertices,
-            triangles,
-            normals,
+/// A closed octahedron around `c` of radius `r`, its triangles
+/// counterclockwise seen from outside, with the exact unit vertex normals.
+fn octahedron(c: DVec3, r: f64) -> Option<TriangleMesh> {
+    let dirs = [
+        DVec3::X,
+        DVec3::NEG_X,
+        DVec3::Y,
+        DVec3::NEG_Y,
+        DVec3::Z,
+        DVec3::NEG_Z,
+    ];
+    let vertices = dirs.map(|d| c + d * r);
+    let mut triangles = Vec::with_capacity(8);
+    for x in [0u32, 1] {
+        for y in [2u32, 3] {
+            for z in [4u32, 5] {
+                // Counterclockwise from outside when the octant's signs
+                // multiply to +1.
+                let positive = (x + y + z).is_multiple_of(2);
+                triangles.push(if positive { [x, y, z] } else { [x, z, y] });
+            }
         }
     }
+    TriangleMesh::new(&vertices, &triangles)
+        .and_then(|m| m.with_normals(&dirs))
+        .ok()
+}
 
-    /// The smallest box holding every vertex: `(min, max)`.
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        self.vertices
-            .iter()
-            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
-                (lo.min(p), hi.max(p))
-            })
-    }
-
-    /// The mesh moved by `offset` (each coordinate rounded once: a far
-    /// copy of the same shape, for far-from-origin scenes).
-    pub fn translated(&self, offset: DVec3) -> SceneMesh {
-        SceneMesh {
-            vertices: self.vertices.iter().map(|&p| p + offset).collect(),
-            triangles: self.triangles.clone(),
-            normals: self.normals.clone(),
+/// One primitive around `c` of size about `s`: spheres, capped cylinders
+/// and cones, disks and meshes most often; planes, infinite cylinders and
+/// cones and paraboloids (the unbounded kinds) one time in four.
+fn primitive(rng: &mut SplitMix64, c: DVec3, s: f64) -> Option<Primitive> {
+    let axis = unit_vector(rng) * s * uniform(rng, 0.5, 2.0);
+    let r = s * uniform(rng, 0.2, 1.0);
+    Some(match rng.next_u64() % 16 {
+        0..=2 => Sphere::new(c, r).ok()?.into(),
+        3 | 4 => CappedCylinder::new(c - axis * 0.5, axis, r).ok()?.into(),
+        5 | 6 => Cone::new(c - axis * 0.5, axis, r).ok()?.into(),
+        7 | 8 => Disk::new(c, axis, r).ok()?.into(),
+        9 | 10 => octahedron(c, r)?.into(),
+        11 | 12 => {
+            // A soup of three triangles around `c`.
+            let v: Vec<DVec3> = (0..9).map(|_| c + unit_vector(rng) * r).collect();
+            TriangleMesh::new(&v, &[[0, 1, 2], [3, 4, 5], [6, 7, 8]])
+                .ok()?
+                .into()
         }
-    }
-
-    /// Appends `other`'s vertices and triangles.
-    fn append(&mut self, other: SceneMesh) {
-        let base = self.vertices.len() as u32;
-        self.vertices.extend(other.vertices);
-        self.normals.extend(other.normals);
-        self.triangles
-            .extend(other.triangles.iter().map(|t| t.map(|i| i + base)));
-    }
-}
-
-/// Area-weighted vertex normals, normalized (`+z` where the faces around a
-/// vertex cancel).
-fn vertex_normals(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Vec<DVec3> {
-    let mut sum = vec![DVec3::ZERO; vertices.len()];
-    for t in triangles {
-        let [a, b, c] = t.map(|i| vertices[i as usize]);
-        let n = (b - a).cross(c - a);
-        for &i in t {
-            sum[i as usize] += n;
-        }
-    }
-    sum.into_iter()
-        .map(|n| n.try_normalize().unwrap_or(DVec3::Z))
-        .collect()
-}
-
-/// A smooth random field: a sum of a few plane waves with random
-/// directions, frequencies and phases, each term's amplitude falling with
-/// its frequency; roughly within `[-1, 1]`.
-struct Waves {
-    terms: Vec<(DVec3, f64)>,
-}
-
-impl Waves {
-    fn new(rng: &mut SplitMix64, count: usize, base: f64) -> Waves {
-        let terms = (0..count)
-            .map(|k| {
-                let f = base * (1.0 + k as f64);
-                let dir = unit_vector(rng);
-                (dir * f, 2.0 * PI * rng.next_f64())
-            })
-            .collect();
-        Waves { terms }
-    }
-
-    fn at(&self, p: DVec3) -> f64 {
-        let norm: f64 = (1..=self.terms.len()).map(|k| 1.0 / k as f64).sum();
-        self.terms
-            .iter()
-            .enumerate()
-            .map(|(k, &(w, phase))| sin(w.dot(p) + phase) / (1.0 + k as f64))
-            .sum::<f64>()
-            / norm
-    }
-}
-
-/// A uniform random unit vector.
-fn unit_vector(rng: &mut SplitMix64) -> DVec3 {
-    let z = 2.0 * rng.next_f64() - 1.0;
-    let phi = 2.0 * PI * rng.next_f64();
-    let r = sqrt((1.0 - z * z).max(0.0));
-    DVec3::new(r * cos(phi), r * sin(phi), z)
-}
-
-/// A unit sphere at the origin, latitude-longitude tessellated (`rings`
-/// bands, `2 rings` segments: `4 rings (rings - 1)` triangles), each vertex
-/// moved along its radius by up to 6% by a smooth random field: smooth,
-/// but with no two triangles in one plane.
-pub fn displaced_sphere(rng: &mut SplitMix64, max_triangles: usize) -> SceneMesh {
-    let rings = rings_for(max_triangles);
-    let waves = Waves::new(rng, 6, 3.0);
-    let radial = |p: DVec3| p * (1.0 + 0.06 * waves.at(p));
-    let mut mesh = sphere_grid(rings, radial);
-    mesh.normals = vertex_normals(&mesh.vertices, &mesh.triangles);
-    mesh
-}
-
-/// The most rings whose sphere has at most `max` triangles (at least 2).
-fn rings_for(max: usize) -> usize {
-    let mut r = 2;
-    while 4 * (r + 1) * r <= max {
-        r += 1;
-    }
-    r
-}
-
-/// The latitude-longitude sphere of `rings` bands, each unit point mapped
-/// by `place`.
-fn sphere_grid(rings: usize, place: impl Fn(DVec3) -> DVec3) -> SceneMesh {
-    let segments = 2 * rings;
-    let mut vertices = vec![place(DVec3::Z)];
-    for i in 1..rings {
-        let theta = PI * i as f64 / rings as f64;
-        for j in 0..segments {
-            let phi = 2.0 * PI * j as f64 / segments as f64;
-            let p = DVec3::new(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
-            vertices.push(place(p));
-        }
-    }
-    let south = vertices.len() as u32;
-    vertices.push(place(-DVec3::Z));
-    let at = |i: usize, j: usize| (1 + (i - 1) * segments + j % segments) as u32;
-    let mut triangles = Vec::with_capacity(4 * rings * (rings - 1));
-    for j in 0..segments {
-        triangles.push([0, at(1, j), at(1, j + 1)]);
-        triangles.push([south, at(rings - 1, j + 1), at(rings - 1, j)]);
-    }
-    for i in 1..rings - 1 {
-        for j in 0..segments {
-            let (a, b, c, d) = (at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1));
-            triangles.push([a, c, d]);
-            triangles.push([a, d, b]);
-        }
-    }
-    SceneMesh::new(vertices, triangles)
-}
-
-/// A height field over `[0, 100]^2`: `2 n^2` triangles on an `n` by `n`
-/// grid (the largest within `max_triangles`), heights up to about 8 from
-/// a smooth random field plus a little per-vertex roughness.
-pub fn terrain(rng: &mut SplitMix64, max_triangles: usize) -> SceneMesh {
-    let mut n = 1;
-    while 2 * (n + 1) * (n + 1) <= max_triangles {
-        n += 1;
-    }
-    let waves = Waves::new(rng, 8, 0.05);
-    let step = 100.0 / n as f64;
-    let mut vertices = Vec::with_capacity((n + 1) * (n + 1));
-    for j in 0..=n {
-        for i in 0..=n {
-            let (x, y) = (i as f64 * step, j as f64 * step);
-            let rough = 0.02 * step * (2.0 * rng.next_f64() - 1.0);
-            let h = 8.0 * waves.at(DVec3::new(x, y, 0.0)) + rough;
-            vertices.push(DVec3::new(x, y, h));
-        }
-    }
-    let at = |i: usize, j: usize| (j * (n + 1) + i) as u32;
-    let mut triangles = Vec::with_capacity(2 * n * n);
-    for j in 0..n {
-        for i in 0..n {
-            triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
-            triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
-        }
-    }
-    SceneMesh::new(vertices, triangles)
-}
-
-/// A closed box room `[-10, 10] x [-10, 10] x [0, 10]`, its six walls
-/// tessellated and facing in, with objects in it: displaced spheres of
-/// radius 1 to 2.5 on the floor and hanging in the air. About a quarter of
-/// the `max_triangles` go to the walls, the rest to the objects.
-pub fn room(rng: &mut SplitMix64, max_triangles: usize) -> SceneMesh {
-    let mut m = 1;
-    while 12 * (m + 1) * (m + 1) <= max_triangles / 4 {
-        m += 1;
-    }
-    let mut mesh = SceneMesh::new(Vec::new(), Vec::new());
-    let (lo, hi) = (DVec3::new(-10.0, -10.0, 0.0), DVec3::new(10.0, 10.0, 10.0));
-    for axis in 0..3 {
-        for high in [false, true] {
-            mesh.append(wall(lo, hi, axis, high, m));
-        }
-    }
-    let objects = 8;
-    let budget = (max_triangles - mesh.triangles.len()) / objects;
-    for k in 0..objects {
-        let radius = 1.0 + 1.5 * rng.next_f64();
-        let x = -7.0 + 14.0 * rng.next_f64();
-        let y = -7.0 + 14.0 * rng.next_f64();
-        let z = if k % 2 == 0 {
-            radius * 0.9
-        } else {
-            3.0 + 4.0 * rng.next_f64()
-        };
-        let centre = DVec3::new(x, y, z);
-        let ball = displaced_sphere(rng, budget);
-        let vertices = ball.vertices.iter().map(|&p| centre + p * radius).collect();
-        mesh.append(SceneMesh::new(vertices, ball.triangles));
-    }
-    mesh
-}
-
-/// One wall of the box `[lo, hi]`: the face at `hi[axis]` (`high`) or
-/// `lo[axis]`, an `m` by `m` grid, counterclockwise seen from inside.
-fn wall(lo: DVec3, hi: DVec3, axis: usize, high: bool, m: usize) -> SceneMesh {
-    let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
-    let mut vertices = Vec::with_capacity((m + 1) * (m + 1));
-    for j in 0..=m {
-        for i in 0..=m {
-            let mut p = DVec3::ZERO;
-            p[axis] = if high { hi[axis] } else { lo[axis] };
-            p[u] = lo[u] + (hi[u] - lo[u]) * i as f64 / m as f64;
-            p[v] = lo[v] + (hi[v] - lo[v]) * j as f64 / m as f64;
-            vertices.push(p);
-        }
-    }
-    let at = |i: usize, j: usize| (j * (m + 1) + i) as u32;
-    let mut triangles = Vec::with_capacity(2 * m * m);
-    for j in 0..m {
-        for i in 0..m {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1));
-            // (u, v, axis) is right-handed: counterclockwise in (u, v)
-            // faces +axis, which is inward on the low wall.
-            if high {
-                triangles.extend([[a, c, d], [a, d, b]]);
+        13 => Plane::new(c, axis).ok()?.into(),
+        14 => {
+            if rng.next_u64().is_multiple_of(2) {
+                Cylinder::new(c, axis, r).ok()?.into()
             } else {
-                triangles.extend([[a, b, d], [a, d, c]]);
+                Cone::infinite(c - axis, axis, r).ok()?.into()
             }
         }
-    }
-    SceneMesh::new(vertices, triangles)
-}
-
-/// `count` camera rays `(origin, direction)` of a pinhole camera outside
-/// the mesh's box, above and to the side of it, looking at its centre over
-/// a field of view that holds the box. Pixel positions are jittered, so
-/// that rays fall between vertices and edges as they do in a renderer.
-pub fn camera_rays(mesh: &SceneMesh, count: usize, rng: &mut SplitMix64) -> Vec<(DVec3, DVec3)> {
-    let (lo, hi) = mesh.bounds();
-    let centre = lo * 0.5 + hi * 0.5;
-    let size = (hi - lo).max_element();
-    let eye = centre + DVec3::new(0.6, -1.2, 0.9) * size;
-    pinhole(eye, centre - eye, 0.4, count, rng)
-}
-
-/// `count` camera rays from inside [`room`], at `(0, -9, 5)`, looking along
-/// `+y` over a 90 degree field of view.
-pub fn room_camera_rays(count: usize, rng: &mut SplitMix64) -> Vec<(DVec3, DVec3)> {
-    pinhole(DVec3::new(0.0, -9.0, 5.0), DVec3::Y, 1.0, count, rng)
-}
-
-/// A pinhole camera's jittered rays: `count` pixels of a square image
-/// whose half width is `half_width` at unit distance along `look`.
-fn pinhole(
-    eye: DVec3,
-    look: DVec3,
-    half_width: f64,
-    count: usize,
-    rng: &mut SplitMix64,
-) -> Vec<(DVec3, DVec3)> {
-    let forward = look.normalize();
-    let right = forward.cross(DVec3::Z).normalize();
-    let up = right.cross(forward);
-    let side = sqrt(count as f64).ceil().max(1.0);
-    (0..count)
-        .map(|k| {
-            let (i, j) = ((k as f64) % side, (k as f64 / side).floor());
-            let x = ((i + rng.next_f64()) / side * 2.0 - 1.0) * half_width;
-            let y = ((j + rng.next_f64()) / side * 2.0 - 1.0) * half_width;
-            (eye, forward + right * x + up * y)
-        })
-        .collect()
-}
-
-/// A direction about the unit `normal` with the cosine-weighted density of
-/// a diffuse bounce (Malley's method: a uniform disk point lifted onto the
-/// hemisphere).
-pub fn cosine_direction(normal: DVec3, rng: &mut SplitMix64) -> DVec3 {
-    let (a, b) = normal.any_orthonormal_pair();
-    let r = sqrt(rng.next_f64());
-    let phi = 2.0 * PI * rng.next_f64();
-    let (x, y) = (r * cos(phi), r * sin(phi));
-    let z = sqrt((1.0 - x * x - y * y).max(0.0));
-    a * x + b * y + normal * z
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every scene stays within its budget, indexes only its vertices, and
-    /// has one unit normal per vertex; the sizes grow with the budget.
-    #[test]
-    fn scenes_fit_their_budgets() {
-        let mut rng = SplitMix64::new(3);
-        for budget in [500, 5_000, 50_000] {
-            let scenes = [
-                displaced_sphere(&mut rng, budget),
-                terrain(&mut rng, budget),
-                room(&mut rng, budget),
+        _ => {
+            // The paraboloid (x - cx)^2 + (y - cy)^2 = s (z - cz), through c.
+            let k = [
+                1.0,
+                1.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                -2.0 * c.x,
+                -2.0 * c.y,
+                -s,
+                c.x * c.x + c.y * c.y + s * c.z,
             ];
-            for s in &scenes {
-                let n = s.triangles.len();
-                assert!(n <= budget && n * 2 > budget, "{n} of {budget}");
-                assert!(
-                    s.triangles
-                        .iter()
-                        .flatten()
-                        .all(|&i| (i as usize) < s.vertices.len())
-                );
-                assert_eq!(s.normals.len(), s.vertices.len());
-                // `normalize` multiplies by the rounded reciprocal of the
-                // rounded length: each coordinate within about 4u of the
-                // exact unit vector's, so the squared length within about
-                // 11u of 1 (Higham, Lemma 3.1); 16u = 8 EPSILON allows it.
-                let near_one = |v: &DVec3| (v.length_squared() - 1.0).abs() <= 8.0 * f64::EPSILON;
-                assert!(s.normals.iter().all(near_one));
-            }
+            Quadric::new(k).ok()?.into()
+        }
+    })
+}
+
+/// A scene of `count` primitives (fewer where a constructor refuses one),
+/// centred in `offset + scale [-2, 2]^3`, each of size `scale` times 0.2
+/// to 2: every kind of [`AnalyticShape`], octahedra with vertex normals
+/// and triangle soups. Finite `scale > 0` and `offset` give finite
+/// primitives (a non-finite one is refused and left out).
+pub fn random_scene(rng: &mut SplitMix64, count: usize, scale: f64, offset: DVec3) -> Scene {
+    let mut builder = SceneBuilder::new();
+    for _ in 0..count {
+        let c = offset + point(rng, 2.0) * scale;
+        if let Some(p) = primitive(rng, c, scale)
+            && builder.add(p).is_err()
+        {
+            break;
         }
     }
+    builder.build()
+}
+
+/// A point of primitive `p` or inside it, from `rng`: a shape's centre
+/// (its apex side for a cone), a random point of a random triangle of a
+/// mesh; `None` for a mesh without triangles. A ray aimed at it from
+/// outside a bounded shape meets the shape.
+pub fn target(rng: &mut SplitMix64, p: &Primitive) -> Option<DVec3> {
+    Some(match p {
+        Primitive::Mesh(mesh) => {
+            let n = mesh.triangles().len() as u64;
+            let tri = mesh.triangle((rng.next_u64() % n.max(1)) as usize)?;
+            point_in_triangle(rng, tri.vertices())
+        }
+        Primitive::Shape(shape) => match shape {
+            AnalyticShape::Sphere(s) => s.center,
+            AnalyticShape::Cylinder(s) => s.point,
+            AnalyticShape::CappedCylinder(s) => s.side.point + s.side.axis * 0.5,
+            AnalyticShape::Cone(s) => s.apex + s.axis * 0.75,
+            AnalyticShape::Quadric(q) => quadric_point(q),
+            AnalyticShape::Disk(s) => s.plane.point,
+            AnalyticShape::Plane(s) => s.point,
+        },
+    })
+}
+
+/// The paraboloid vertex of a [`random_scene`] quadric (`G = -2 c_x`, `H =
+/// -2 c_y`, `I = -s`, `J = c_x^2 + c_y^2 + s c_z`); for any other quadric,
+/// a point near which it may pass.
+fn quadric_point(q: &Quadric) -> DVec3 {
+    let [.., g, h, i, j] = q.coefficients();
+    let (x, y) = (-g / 2.0, -h / 2.0);
+    let z = if i != 0.0 {
+        (j - x * x - y * y) / -i
+    } else {
+        0.0
+    };
+    DVec3::new(x, y, z)
+}
+
+/// The largest extent of `p`'s box (a mesh's vertices'), 0 for an
+/// unbounded shape or an empty mesh.
+fn size(p: &Primitive) -> f64 {
+    let aabb = match p {
+        Primitive::Mesh(mesh) => Aabb::of_points(mesh.vertices()),
+        Primitive::Shape(shape) => shape.aabb(),
+    };
+    aabb.map_or(0.0, |b| (b.max() - b.min()).max_element())
+}
+
+/// A ray for `scene`: aimed at a random primitive's [`target`] from a
+/// random point around it (one to ten times the distance to another
+/// target, or the primitive's size), or, one time in four, starting at
+/// the target (inside a solid, or on a surface) in a random direction.
+/// `None` for an empty scene (or when the direction comes out zero).
+pub fn scene_ray(rng: &mut SplitMix64, scene: &Scene) -> Option<Ray> {
+    let n = scene.len() as u64;
+    if n == 0 {
+        return None;
+    }
+    let pick = |rng: &mut SplitMix64| &scene.primitives()[(rng.next_u64() % n) as usize];
+    let p = pick(rng);
+    let t = target(rng, p)?;
+    if rng.next_u64().is_multiple_of(4) {
+        return Ray::new(t, unit_vector(rng)).ok();
+    }
+    let q = pick(rng);
+    let other = target(rng, q)?;
+    // The first positive finite one of: the distance to the other target,
+    // the primitive's size, the target's magnitude, 1.
+    let reach = [(other - t).length(), size(p), t.abs().max_element()]
+        .into_iter()
+        .find(|r| *r > 0.0 && r.is_finite())
+        .unwrap_or(1.0);
+    let origin = t + unit_vector(rng) * reach * uniform(rng, 1.0, 10.0);
+    Ray::new(origin, t - origin).ok()
+}
+
+/// A secondary ray: a hit of a primary ray on a scene, and a ray spawned
+/// from it ([`spawn_ray`]).
+#[derive(Clone, Copy, Debug)]
+pub struct SpawnedRay {
+    /// The primary ray.
+    pub primary: Ray,
+    /// Its closest hit ([`Interval::FORWARD`], watertight meshes).
+    pub hit: SceneHit,
+    /// The unit direction chosen: at a random elevation (sine from 1
+    /// down to `10^-5`, often grazing) on the side of the surface the
+    /// primary came from, or one time in four on the other side.
+    pub direction: DVec3,
+    /// The ray spawned from the hit along `direction`.
+    pub ray: Ray,
+}
+
+impl SpawnedRay {
+    /// Whether `direction` leaves on the side the primary came from.
+    #[inline]
+    pub fn reflected(&self) -> bool {
+        (self.direction.dot(self.hit.hit.normal) > 0.0)
+            != (self.primary.direction().dot(self.hit.hit.normal) > 0.0)
+    }
+}
+
+/// A [`SpawnedRay`] for `scene` from up to eight [`scene_ray`] primaries,
+/// or `None` when none hits (or the hit's point error is infinite, where
+/// no ray can be spawned).
+pub fn spawned_ray(rng: &mut SplitMix64, scene: &Scene) -> Option<SpawnedRay> {
+    for _ in 0..8 {
+        let Some(primary) = scene_ray(rng, scene) else {
+            continue;
+        };
+        let Some(hit) = scene.closest_hit(&primary, Interval::FORWARD) else {
+            continue;
+        };
+        let n = hit.hit.normal;
+        let front = if primary.direction().dot(n) > 0.0 {
+            -n
+        } else {
+            n
+        };
+        let side = if rng.next_u64().is_multiple_of(4) {
+            -front
+        } else {
+            front
+        };
+        let s = powf(10.0, -5.0 * rng.next_f64());
+        let tangent = unit_vector(rng)
+            .reject_from_normalized(side)
+            .normalize_or(side.any_orthonormal_vector());
+        let direction = tangent * sqrt((1.0 - s * s).max(0.0)) + side * s;
+        if let Ok(ray) = spawn_ray(&hit.hit, direction) {
+            return Some(SpawnedRay {
+                primary,
+                hit,
+                direction,
+                ray,
+            });
+        }
+    }
+    None
 }

@@ -2,7 +2,8 @@
 //!
 //! The per-family strategies ([`orient2d_inputs`], ...) draw a seed and run
 //! the deterministic generators of [`testing`](crate::testing) for an
-//! [`InputClass`]; [`finite_f64`] and the `finite_*` point strategies cover
+//! [`InputClass`]; [`small_scenes`] and [`spawned_rays`] do the same for
+//! scenes of meshes and analytic shapes and for secondary rays on them; [`finite_f64`] and the `finite_*` point strategies cover
 //! every finite `f64` bit pattern. The thin wrappers ([`degenerate_orient2d`],
 //! [`near_degenerate_incircle`], ...) name the classes most tests want.
 //!
@@ -38,11 +39,13 @@
 //! # finite_never_panics();
 //! ```
 
+use crate::scene::Scene;
 use crate::testing::finite_f64_from_bits;
 use crate::testing::{
-    InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
-    plane_side_case,
+    InputClass, SCENE_PLACES, SpawnedRay, SplitMix64, incircle_case, insphere_case, orient2d_case,
+    orient3d_case, plane_side_case, random_scene, spawned_ray,
 };
+use alloc::sync::Arc;
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
@@ -173,4 +176,85 @@ pub fn hard_insphere() -> impl Strategy<Value = [DVec3; 5]> {
 /// Plane-side arguments from every class, each equally likely.
 pub fn hard_plane_side() -> impl Strategy<Value = [DVec3; 5]> {
     any_class().prop_flat_map(plane_side_inputs)
+}
+
+/// Scenes of 1 to 8 primitives from [`random_scene`]: spheres, capped and
+/// infinite cylinders and cones, paraboloids, disks, planes, closed
+/// octahedra with vertex normals and triangle soups, at one of the
+/// [`SCENE_PLACES`]. Brute force over [`Scene::primitives`] is the
+/// oracle of their closest hits.
+///
+/// ```
+/// use exactray::prelude::*;
+/// use exactray::testing::small_scenes;
+/// use proptest::prelude::*;
+/// proptest! {
+///     #![proptest_config(ProptestConfig::with_cases(16))]
+///     // A ray blocked by the scene is one with a closest hit.
+///     fn occluded_is_a_hit(scene in small_scenes(), d in prop::array::uniform3(-1.0..1.0f64)) {
+///         if let Ok(ray) = Ray::new([0.0; 3], d) {
+///             let hit = scene.closest_hit(&ray, Interval::FORWARD);
+///             prop_assert_eq!(scene.occluded(&ray, Interval::FORWARD), hit.is_some());
+///         }
+///     }
+/// }
+/// # occluded_is_a_hit();
+/// ```
+pub fn small_scenes() -> impl Strategy<Value = Scene> {
+    (
+        any::<u64>(),
+        1usize..=8,
+        proptest::sample::select(&SCENE_PLACES[..]),
+    )
+        .prop_map(|(seed, count, (scale, offset))| {
+            let offset = DVec3::new(1.0, -0.7, 0.4) * offset;
+            random_scene(&mut SplitMix64::new(seed), count, scale, offset)
+        })
+        .no_shrink()
+}
+
+/// Secondary rays on `scene` ([`spawned_ray`]): a primary ray's closest
+/// hit, and a ray spawned from it at a random, often grazing, elevation,
+/// on the side the primary came from or (one time in four) through the
+/// surface. For a user's own scene; seeds whose eight primaries all miss
+/// (or hit only where no ray can be spawned) are rejected, so a scene that
+/// most rays miss makes proptest give up ("too many local rejects").
+/// [`scenes_with_spawned_rays`] draws the scene too.
+pub fn spawned_rays(scene: Arc<Scene>) -> impl Strategy<Value = SpawnedRay> {
+    any::<u64>()
+        .prop_filter_map("no primary ray hit the scene", move |seed| {
+            spawned_ray(&mut SplitMix64::new(seed), &scene)
+        })
+        .no_shrink()
+}
+
+/// A scene of [`small_scenes`] and a secondary ray on it (as
+/// [`spawned_rays`]); a pair whose primaries all miss is drawn again,
+/// scene and all.
+///
+/// ```
+/// use exactray::prelude::*;
+/// use exactray::testing::scenes_with_spawned_rays;
+/// use proptest::prelude::*;
+/// proptest! {
+///     #![proptest_config(ProptestConfig::with_cases(16))]
+///     // A ray leaving a mesh's triangle never meets that triangle again.
+///     fn no_self_hit((scene, s) in scenes_with_spawned_rays()) {
+///         let next = scene.closest_hit(&s.ray, Interval::FORWARD);
+///         if let (Some(next), Some(left)) = (next, s.hit.triangle) {
+///             let same = next.primitive == s.hit.primitive
+///                 && next.triangle.is_some_and(|p| p.triangle == left.triangle);
+///             prop_assert!(!same, "{:?} -> {:?}", s, next);
+///         }
+///     }
+/// }
+/// # no_self_hit();
+/// ```
+pub fn scenes_with_spawned_rays() -> impl Strategy<Value = (Arc<Scene>, SpawnedRay)> {
+    (small_scenes(), any::<u64>())
+        .prop_filter_map("no primary ray hit the scene", |(scene, seed)| {
+            let spawned = spawned_ray(&mut SplitMix64::new(seed), &scene)?;
+            Some((Arc::new(scene), spawned))
+        })
+        .no_shrink()
 }

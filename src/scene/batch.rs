@@ -1,0 +1,172 @@
+//! Many rays at once: [`BatchQueries`], the batch forms of the closest-hit
+//! and shadow-ray queries of [`TriangleMesh`] and [`Scene`], one piece of
+//! logic for both; in parallel with rayon under the `rayon` feature.
+
+use super::{MeshHit, Scene, SceneHit, TriangleMesh};
+use crate::error::InputError;
+use crate::interval::Interval;
+use crate::query::ray::Ray;
+
+/// `out[i] = f(&queries[i])` for every `i`, on the calling thread.
+fn each_into<Q, R>(queries: &[Q], out: &mut [R], f: impl Fn(&Q) -> R) -> Result<(), InputError> {
+    InputError::check_lengths(queries.len(), out.len())?;
+    for (q, o) in queries.iter().zip(out.iter_mut()) {
+        *o = f(q);
+    }
+    Ok(())
+}
+
+/// [`each_into`] over rayon's thread pool.
+#[cfg(feature = "rayon")]
+fn par_each_into<Q: Sync, R: Send>(
+    queries: &[Q],
+    out: &mut [R],
+    f: impl Fn(&Q) -> R + Sync,
+) -> Result<(), InputError> {
+    use rayon::prelude::*;
+    InputError::check_lengths(queries.len(), out.len())?;
+    // A task of at least 64 rays: a ray query takes 0.1 to a few µs, so a
+    // task outweighs rayon's per-task cost (about a µs).
+    queries
+        .par_iter()
+        .zip(out.par_iter_mut())
+        .with_min_len(64)
+        .for_each(|(q, o)| *o = f(q));
+    Ok(())
+}
+
+/// The closest-hit and shadow-ray queries of one ray, and their batch
+/// forms over slices of rays, which write into the caller's slice and
+/// never allocate: implemented by [`TriangleMesh`] and [`Scene`] (with
+/// the watertight triangle test; for another, loop over their
+/// `closest_hit_with`). The batch answer for each ray is the one-ray
+/// answer, in parallel or not.
+///
+/// ```
+/// use exactray::prelude::*;
+/// let mut builder = SceneBuilder::new();
+/// builder.add(Sphere::new([0.0, 0.0, 0.0], 1.0).unwrap()).unwrap();
+/// let scene = builder.build();
+/// let rays = [
+///     Ray::new([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]).unwrap(),
+///     Ray::new([3.0, 0.0, 5.0], [0.0, 0.0, -1.0]).unwrap(),
+/// ];
+/// let mut hits = [None; 2];
+/// scene.closest_hits(&rays, Interval::FORWARD, &mut hits).unwrap();
+/// assert_eq!(hits.map(|h| h.map(|h| h.hit.t)), [Some(4.0), None]);
+/// let mut blocked = [false; 2];
+/// scene.occluded_batch(&rays, Interval::FORWARD, &mut blocked).unwrap();
+/// assert_eq!(blocked, [true, false]);
+/// // A slice of the wrong length is a typed error, and nothing is written.
+/// let err = scene.occluded_batch(&rays, Interval::FORWARD, &mut [false; 3]);
+/// assert_eq!(err, Err(InputError::LengthMismatch { expected: 2, got: 3 }));
+/// ```
+pub trait BatchQueries {
+    /// What a closest hit reports.
+    type Hit: Copy;
+
+    /// The closest hit of `ray` for `t` in `range`, or `None`.
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Self::Hit>;
+
+    /// Whether `ray` meets the geometry for some `t` in `range`.
+    fn occluded(&self, ray: &Ray, range: Interval) -> bool;
+
+    /// `out[i] = closest_hit(&rays[i], range)` for every `i`, on the
+    /// calling thread.
+    ///
+    /// # Errors
+    /// [`InputError::LengthMismatch`] (`expected` = `rays.len()`) when
+    /// `out` has another length; nothing is written then.
+    fn closest_hits(
+        &self,
+        rays: &[Ray],
+        range: Interval,
+        out: &mut [Option<Self::Hit>],
+    ) -> Result<(), InputError> {
+        each_into(rays, out, |ray| self.closest_hit(ray, range))
+    }
+
+    /// `out[i] = occluded(&rays[i], range)` for every `i`, on the calling
+    /// thread.
+    ///
+    /// # Errors
+    /// [`InputError::LengthMismatch`] (`expected` = `rays.len()`) when
+    /// `out` has another length; nothing is written then.
+    fn occluded_batch(
+        &self,
+        rays: &[Ray],
+        range: Interval,
+        out: &mut [bool],
+    ) -> Result<(), InputError> {
+        each_into(rays, out, |ray| self.occluded(ray, range))
+    }
+
+    /// [`closest_hits`](Self::closest_hits) spread over rayon's thread
+    /// pool (the `rayon` feature).
+    ///
+    /// # Errors
+    /// As [`closest_hits`](Self::closest_hits).
+    #[cfg(feature = "rayon")]
+    fn par_closest_hits(
+        &self,
+        rays: &[Ray],
+        range: Interval,
+        out: &mut [Option<Self::Hit>],
+    ) -> Result<(), InputError>
+    where
+        Self: Sync,
+        Self::Hit: Send,
+    {
+        par_each_into(rays, out, |ray| self.closest_hit(ray, range))
+    }
+
+    /// [`occluded_batch`](Self::occluded_batch) spread over rayon's
+    /// thread pool (the `rayon` feature).
+    ///
+    /// # Errors
+    /// As [`occluded_batch`](Self::occluded_batch).
+    #[cfg(feature = "rayon")]
+    fn par_occluded_batch(
+        &self,
+        rays: &[Ray],
+        range: Interval,
+        out: &mut [bool],
+    ) -> Result<(), InputError>
+    where
+        Self: Sync,
+    {
+        par_each_into(rays, out, |ray| self.occluded(ray, range))
+    }
+}
+
+impl BatchQueries for TriangleMesh {
+    type Hit = MeshHit;
+
+    /// [`TriangleMesh::closest_hit`].
+    #[inline]
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<MeshHit> {
+        TriangleMesh::closest_hit(self, ray, range)
+    }
+
+    /// [`TriangleMesh::occluded`].
+    #[inline]
+    fn occluded(&self, ray: &Ray, range: Interval) -> bool {
+        TriangleMesh::occluded(self, ray, range)
+    }
+}
+
+impl BatchQueries for Scene {
+    type Hit = SceneHit;
+
+    /// [`Scene::closest_hit`].
+    #[inline]
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
+        Scene::closest_hit(self, ray, range)
+    }
+
+    /// [`Scene::occluded`].
+    #[inline]
+    fn occluded(&self, ray: &Ray, range: Interval) -> bool {
+        Scene::occluded(self, ray, range)
+    }
+}
