@@ -11,7 +11,8 @@
 //!   `vertices:N` (rays aimed at mesh vertices, where triangles meet).
 //!   Methods: `exactray` (the default watertight test, default builder),
 //!   `exactray-ploc` / `exactray-sah` (the other builder), `exactray-exact`,
-//!   `obvhs`, `obvhs-bvh2`, `parry3d`, `brute-force` (the exact test on
+//!   `obvhs`, `obvhs-bvh2`, `parry3d`, `exactray-rayon` (the default
+//!   query's `par_closest_hits` on rayon's pool, both cores), `brute-force` (the exact test on
 //!   every triangle; a few rays, smallest sphere only). `errors`: a hit or
 //!   miss that differs from the exact variant's, or a hit on a triangle
 //!   that does not contain the exact first hit point (decided with
@@ -32,6 +33,7 @@
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
 use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray, Watertight};
+use exactray::scene::BatchQueries;
 use exactray::scene::{
     BvhBuilder, MeshHit, PlocQuality, TriangleMesh, reflect_above, spawn_ray, spawn_ray_to,
 };
@@ -44,6 +46,7 @@ use exactray_peers::scene::{ObvhsScene, ParryScene};
 use glam::DVec3;
 use num_bigint::BigInt;
 use std::sync::{Arc, OnceLock};
+use std::time::Duration;
 use std::time::Instant;
 
 /// One scene and every structure the methods query.
@@ -243,7 +246,42 @@ fn closest_methods(s: &Arc<Setup>) -> Vec<Closest> {
             p.parry.as_ref().and_then(|p| p.closest(o, dir, max))
         }));
     }
+    m.push(Box::new(Rayon(s.clone())));
     m
+}
+
+/// `par_closest_hits` over the whole timed set on rayon's pool (every
+/// case of a closest-hit input has the range `[0, inf)`): one call per
+/// pass, its time divided by the number of rays.
+struct Rayon(Arc<Setup>);
+
+impl Measure<Case, Option<(u32, f64)>> for Rayon {
+    fn name(&self) -> &'static str {
+        "exactray-rayon"
+    }
+
+    fn answer(&self, case: &Case) -> Option<(u32, f64)> {
+        let mut out = [None];
+        self.0
+            .ours
+            .par_closest_hits(&[case.ray], case.range, &mut out)
+            .expect("one answer per ray");
+        out[0].map(|h| (h.triangle, h.hit.t))
+    }
+
+    fn run_loop(&self, cases: &[Case], iters: u64) -> Duration {
+        let rays: Vec<Ray> = cases.iter().map(|c| c.ray).collect();
+        let mut out = vec![None; rays.len()];
+        let start = Instant::now();
+        for _ in 0..iters {
+            self.0
+                .ours
+                .par_closest_hits(std::hint::black_box(&rays), Interval::FORWARD, &mut out)
+                .expect("one answer per ray");
+            std::hint::black_box(&mut out);
+        }
+        start.elapsed()
+    }
 }
 
 fn any_hit_methods(s: &Arc<Setup>) -> Vec<AnyHit> {
