@@ -49,8 +49,13 @@
 //! point met; and [`TriangleMesh::occluded_between_with`] decides on the
 //! exact segment from `p` to `q`. The watertight default keeps its
 //! rounded rules: a ray in a triangle's plane is a miss wherever its
-//! determinant rounds to zero (it may be a hit where it does not), and
-//! near ties are ordered by the certified parameters.
+//! determinant rounds to zero (it may be a hit where it does not), a ray
+//! that only touches a silhouette edge or vertex (the triangles there face
+//! it on different sides) may be a miss (the shared edge's one rounded
+//! sign puts it inside both triangles or outside both), and near ties are
+//! ordered by the certified parameters. Where the ray crosses the surface
+//! at a shared edge or vertex of a closed or tiled part of a mesh, it is
+//! never missed.
 //!
 //! With [`Exact`], every hit is a crossing of the exact segment with the
 //! triangle, so its box is never culled and the queries equal a loop over
