@@ -1233,21 +1233,24 @@ fn malformed_lines_are_rejected() {
     );
 }
 
+/// A whole-file checker's outcomes on the lines of `text`: `Some(true)` a
+/// pass, `Some(false)` a mismatch, `None` a line that cannot be parsed (or
+/// a panic).
+fn file_outcomes(check: FileChecker, text: &str) -> Vec<(usize, Option<bool>)> {
+    let lines: Vec<Vec<&str>> = text.lines().map(|l| l.split(' ').collect()).collect();
+    check(&lines)
+        .into_iter()
+        .map(|(i, o)| match o {
+            Ok(Ok(Verdict::Pass)) => (i, Some(true)),
+            Ok(Ok(Verdict::Mismatch { .. })) => (i, Some(false)),
+            Ok(Err(_)) | Err(_) => (i, None),
+        })
+        .collect()
+}
+
 #[test]
 fn nearest_files_are_parsed_strictly() {
-    let lines = |text: &'static str| -> Vec<Vec<&'static str>> {
-        text.lines().map(|l| l.split(' ').collect()).collect()
-    };
-    let outcomes = |check: FileChecker, text: &'static str| -> Vec<(usize, Option<bool>)> {
-        check(&lines(text))
-            .into_iter()
-            .map(|(i, o)| match o {
-                Ok(Ok(Verdict::Pass)) => (i, Some(true)),
-                Ok(Ok(Verdict::Mismatch { .. })) => (i, Some(false)),
-                Ok(Err(_)) | Err(_) => (i, None),
-            })
-            .collect()
-    };
+    let outcomes = file_outcomes;
     // Points 0 and 2 are at distance 1 from the first query, point 1 at 1.5.
     let good = "p 0 0 1\np 0 0 -1.5\np 1 0 0\nq 0 0 0 0 2\nq 0 0 -2 1";
     for check in [crate_nearest as FileChecker, oracle_nearest] {
@@ -1289,19 +1292,7 @@ fn nearest_files_are_parsed_strictly() {
 
 #[test]
 fn ray_mesh_files_are_parsed_strictly() {
-    let lines = |text: &'static str| -> Vec<Vec<&'static str>> {
-        text.lines().map(|l| l.split(' ').collect()).collect()
-    };
-    let outcomes = |check: FileChecker, text: &'static str| -> Vec<(usize, Option<bool>)> {
-        check(&lines(text))
-            .into_iter()
-            .map(|(i, o)| match o {
-                Ok(Ok(Verdict::Pass)) => (i, Some(true)),
-                Ok(Ok(Verdict::Mismatch { .. })) => (i, Some(false)),
-                Ok(Err(_)) | Err(_) => (i, None),
-            })
-            .collect()
-    };
+    let outcomes = file_outcomes;
     // The unit square in two triangles: a ray through the shared diagonal,
     // a ray in the plane entering through the edge x = 0 at t = 0.5, a
     // miss, a blocked and an unblocked segment.
@@ -1310,10 +1301,9 @@ fn ray_mesh_files_are_parsed_strictly() {
         "{square}\nr 0.5 0.5 2 0 0 -1 1 2 0 1\nr -1 0.25 0 2 0 0 1 0.5 1\nr 0.5 0.5 2 0 0 1 0\n\
          s 0.5 0.5 1 0.5 0.5 -1 1\ns 0.5 0.5 1 0.5 0.5 0.5 0"
     );
-    let good: &'static str = Box::leak(good.into_boxed_str());
     for check in [crate_ray_mesh as FileChecker, oracle_ray_mesh] {
         assert_eq!(
-            outcomes(check, good),
+            outcomes(check, &good),
             [6, 7, 8, 9, 10].map(|i| (i, Some(true)))
         );
         // Wrong answers: another t, a triangle not containing the point, a
@@ -1324,8 +1314,8 @@ fn ray_mesh_files_are_parsed_strictly() {
             ("r 0.5 0.5 2 0 0 -1 0", 6),
             ("s 0.5 0.5 1 0.5 0.5 -1 0", 6),
         ] {
-            let text: &'static str = Box::leak(format!("{square}\n{wrong}").into_boxed_str());
-            assert_eq!(outcomes(check, text), [(line, Some(false))], "{wrong}");
+            let text = format!("{square}\n{wrong}");
+            assert_eq!(outcomes(check, &text), [(line, Some(false))], "{wrong}");
         }
         for (bad, line) in [
             ("v 0 0\nf 0 0 0", 0),                         // too few fields

@@ -647,63 +647,42 @@ void common_sections(MeshFile& f, int spread, bool closed, bool coplanar, int n)
   }
 }
 
+// Writes ray_mesh-<name>.txt: the mesh and its common sections.
+void write_mesh(const std::string& outdir, LatticeMesh m, const char* name, const char* what, int spread, bool closed,
+                bool coplanar, int n) {
+  m.name = name;
+  m.what = what;
+  MeshFile f(m);
+  common_sections(f, spread, closed, coplanar, n);
+  f.finish(outdir);
+}
+
 }  // namespace
 
 void gen_ray_mesh_files(const std::string& outdir) {
-  {
-    LatticeMesh m = octahedron(24 * 20, -4);
-    m.name = "octahedron";
-    m.what = "the octahedron with vertices at +-30 on the axes (8 triangles; closed)";
-    MeshFile f(m);
-    common_sections(f, 12, true, true, 40);
-    f.finish(outdir);
-  }
-  {
-    LatticeMesh m = cube(24 * 16, -6);
-    m.name = "cube";
-    m.what = "the cube [-6, 6]^3 in 12 triangles (closed; each face two coplanar triangles)";
-    MeshFile f(m);
-    common_sections(f, 12, true, true, 40);
-    f.finish(outdir);
-  }
-  {
-    LatticeMesh m = octasphere(2, 1 << 12, -10);
-    m.name = "octasphere";
-    m.what = "an octahedron subdivided twice, vertices rounded onto a sphere of radius 96 (128 triangles; closed)";
-    MeshFile f(m);
-    common_sections(f, 18, true, false, 40);
-    f.finish(outdir);
-  }
-  {
-    Rng r(fnv1a("ray_mesh/heightfield/mesh"));
-    LatticeMesh m = height_field(r, 8, 4, 6, -5);
-    m.name = "heightfield";
-    m.what = "an 8x8 tiled height field, random integer heights, random diagonals (128 triangles; open)";
-    MeshFile f(m);
-    common_sections(f, 12, false, true, 40);
-    f.finish(outdir);
-  }
-  {
-    LatticeMesh m = octasphere(1, 1 << 10, 0);
-    m.shift(I3{100000000, -70000000, 40000000});
-    m.name = "far";
-    m.what = "an octahedron subdivided once (32 triangles; closed), radius 24576, offset (1e8, -7e7, 4e7)";
-    MeshFile f(m);
-    common_sections(f, 17, true, false, 30);
-    f.finish(outdir);
-  }
-  {
-    LatticeMesh outer = octasphere(1, 1 << 20, -20), inner = octasphere(1, (1 << 20) - 1, -20);
-    LatticeMesh m = outer;
-    m.name = "nested";
-    m.what = "two octahedra subdivided once, radii 24 and 24 (1 - 2^-20): one inside the other, 64 triangles";
-    int base = int(m.pts.size());
-    for (const I3& p : inner.pts) m.pts.push_back(p);
-    for (const Tri3& t : inner.tris) m.tris.push_back({t[0] + base, t[1] + base, t[2] + base});
-    MeshFile f(m);
-    common_sections(f, 26, true, false, 30);
-    f.finish(outdir);
-  }
+  write_mesh(outdir, octahedron(24 * 20, -4), "octahedron",
+             "the octahedron with vertices at +-30 on the axes (8 triangles; closed)", 12, true, true, 40);
+  write_mesh(outdir, cube(24 * 16, -6), "cube",
+             "the cube [-6, 6]^3 in 12 triangles (closed; each face two coplanar triangles)", 12, true, true, 40);
+  write_mesh(outdir, octasphere(2, 1 << 12, -10), "octasphere",
+             "an octahedron subdivided twice, vertices rounded onto a sphere of radius 96 (128 triangles; closed)", 18,
+             true, false, 40);
+  Rng r(fnv1a("ray_mesh/heightfield/mesh"));
+  write_mesh(outdir, height_field(r, 8, 4, 6, -5), "heightfield",
+             "an 8x8 tiled height field, random integer heights, random diagonals (128 triangles; open)", 12, false,
+             true, 40);
+  LatticeMesh far = octasphere(1, 1 << 10, 0);
+  far.shift(I3{100000000, -70000000, 40000000});
+  write_mesh(outdir, far, "far",
+             "an octahedron subdivided once (32 triangles; closed), radius 24576, offset (1e8, -7e7, 4e7)", 17, true,
+             false, 30);
+  LatticeMesh nested = octasphere(1, 1 << 20, -20), inner = octasphere(1, (1 << 20) - 1, -20);
+  int base = int(nested.pts.size());
+  for (const I3& p : inner.pts) nested.pts.push_back(p);
+  for (const Tri3& t : inner.tris) nested.tris.push_back({t[0] + base, t[1] + base, t[2] + base});
+  write_mesh(outdir, nested, "nested",
+             "two octahedra subdivided once, radii 24 and 24 (1 - 2^-20): one inside the other, 64 triangles", 26,
+             true, false, 30);
 }
 
 }  // namespace fixtures

@@ -170,9 +170,10 @@ impl TriangleTest for Exact {
     ///
     /// Each certified `t` is within `4u |t*| + 2^-1073` of its exact `t*`
     /// (`EXACT_T_ULPS`; the second term for subnormal results), so
-    /// `|t*| <= (|t| + 2^-1073) / (1 - 4u)` and `|t - t*| <= e(t) = 4u (|t|
-    /// + 2^-1073) / (1 - 4u) + 2^-1073 < 4.01u |t| + 2^-1072`. `E(t) =
-    /// fl(5u |t|) + 2^-1072` is at least that (one rounding of the product,
+    /// `|t*| <= (|t| + 2^-1073) / (1 - 4u)` and `|t - t*| <= e(t) =
+    /// 4u (|t| + 2^-1073) / (1 - 4u) + 2^-1073 < 4.01u |t| + 2^-1072`.
+    /// `E(t) = fl(5u |t|) + 2^-1072` is at least that (one rounding of the
+    /// product,
     /// and the sum's rounding is at most `u` of it). The computed gap
     /// `fl(|a - b|)` is within `u` of the exact one (exact when subnormal),
     /// so `fl(|a - b|) > 2 fl(E(a) + E(b))` gives `|a - b| > e(a) + e(b)`:
