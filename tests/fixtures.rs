@@ -16,10 +16,12 @@
 use exactray::bvh::Nearest;
 use exactray::bvh::SphereBvh;
 use exactray::interval::Interval;
-use exactray::query::ray::Ray;
+use exactray::query::ray::{Exact, Ray};
 use exactray::roots::Roots;
+use exactray::scene::TriangleMesh;
 use exactray::shape::{Cylinder, Quadric, Sphere, Triangle};
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
+use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
 use num_traits::Zero;
 use std::collections::BTreeMap;
@@ -132,6 +134,12 @@ const KINDS: &[Kind] = &[
         min_fields: 4,
         predicate: Some(WholeFile(crate_nearest)),
         oracle: Some(WholeFile(oracle_nearest)),
+    },
+    Kind {
+        name: "ray_mesh",
+        min_fields: 4,
+        predicate: Some(WholeFile(crate_ray_mesh)),
+        oracle: Some(WholeFile(oracle_ray_mesh)),
     },
 ];
 
@@ -609,6 +617,325 @@ fn oracle_nearest(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
 }
 
 // ---------------------------------------------------------------------------
+// Ray meshes: one mesh per file
+
+/// A `ray_mesh` query line: its position among the file's lines and what
+/// it asks.
+enum MeshQuery {
+    /// `r`: the ray, and the hit (`t`, every triangle containing the exact
+    /// first point, strictly ascending) or `None` for a miss.
+    Ray {
+        o: [f64; 3],
+        d: [f64; 3],
+        want: Option<(f64, Vec<usize>)>,
+    },
+    /// `s`: the segment's ends and whether it is blocked.
+    Segment {
+        p: [f64; 3],
+        q: [f64; 3],
+        blocked: bool,
+    },
+}
+
+/// A `ray_mesh` file: `v x y z` vertices and `f i j k` triangles (each
+/// indexed from 0 in order, `v` and `f` lines in any order), `r` and `s`
+/// queries against them.
+struct MeshFile {
+    vertices: Vec<[f64; 3]>,
+    triangles: Vec<[u32; 3]>,
+    /// The position of each `f` line, to report a bad index there.
+    triangle_lines: Vec<usize>,
+    queries: Vec<(usize, MeshQuery)>,
+}
+
+fn parse_index(field: &str) -> Result<usize, String> {
+    // `usize::from_str` accepts a leading `+`; the format does not.
+    if field.starts_with('+') {
+        return Err(format!("bad index {field:?}"));
+    }
+    field
+        .parse()
+        .map_err(|e| format!("bad index {field:?}: {e}"))
+}
+
+fn parse_flag(field: &str, what: &str) -> Result<bool, String> {
+    match field {
+        "0" => Ok(false),
+        "1" => Ok(true),
+        _ => Err(format!("bad {what} {field:?} (want 0 or 1)")),
+    }
+}
+
+fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), String> {
+    let count = |n: usize, tag: &str| {
+        if f.len() == n {
+            Ok(())
+        } else {
+            Err(format!("a {tag} line has {n} fields, found {}", f.len()))
+        }
+    };
+    match f[0] {
+        "v" => {
+            count(4, "v")?;
+            file.vertices.push(parse_point3(&f[1..])?);
+        }
+        "f" => {
+            count(4, "f")?;
+            let mut t = [0u32; 3];
+            for (x, field) in t.iter_mut().zip(&f[1..]) {
+                *x = u32::try_from(parse_index(field)?)
+                    .map_err(|_| format!("index {field} beyond u32"))?;
+            }
+            file.triangles.push(t);
+            file.triangle_lines.push(i);
+        }
+        "r" => {
+            if f.len() < 8 {
+                return Err(format!(
+                    "an r line has at least 8 fields, found {}",
+                    f.len()
+                ));
+            }
+            let (o, d) = (parse_point3(&f[1..4])?, parse_point3(&f[4..7])?);
+            let want = if parse_flag(f[7], "hit")? {
+                if f.len() < 10 {
+                    return Err("a hit needs t and at least one triangle".to_string());
+                }
+                let t = parse_f64(f[8])?;
+                let mut tris: Vec<usize> = Vec::with_capacity(f.len() - 9);
+                for field in &f[9..] {
+                    let index = parse_index(field)?;
+                    if tris.last().is_some_and(|&last| last >= index) {
+                        return Err("triangles must be strictly ascending".to_string());
+                    }
+                    tris.push(index);
+                }
+                Some((t, tris))
+            } else {
+                count(8, "miss (hit 0) r")?;
+                None
+            };
+            file.queries.push((i, MeshQuery::Ray { o, d, want }));
+        }
+        "s" => {
+            count(8, "s")?;
+            let (p, q) = (parse_point3(&f[1..4])?, parse_point3(&f[4..7])?);
+            let blocked = parse_flag(f[7], "blocked")?;
+            file.queries.push((i, MeshQuery::Segment { p, q, blocked }));
+        }
+        tag => return Err(format!("expected a v, f, r or s line, found {tag:?}")),
+    }
+    Ok(())
+}
+
+/// The file, or the first line that cannot be parsed with why: a
+/// malformed line, a triangle's vertex index beyond the vertices, or a
+/// query's triangle index beyond the triangles.
+fn parse_ray_mesh(lines: &[Vec<&str>]) -> Result<MeshFile, (usize, String)> {
+    let mut file = MeshFile {
+        vertices: Vec::new(),
+        triangles: Vec::new(),
+        triangle_lines: Vec::new(),
+        queries: Vec::new(),
+    };
+    for (i, f) in lines.iter().enumerate() {
+        parse_mesh_line(f, &mut file, i).map_err(|e| (i, e))?;
+    }
+    let n = file.vertices.len();
+    for (t, &at) in file.triangles.iter().zip(&file.triangle_lines) {
+        if let Some(bad) = t.iter().find(|&&k| k as usize >= n) {
+            return Err((at, format!("vertex {bad} but the file has {n} vertices")));
+        }
+    }
+    let n = file.triangles.len();
+    for (at, q) in &file.queries {
+        if let MeshQuery::Ray {
+            want: Some((_, tris)),
+            ..
+        } = q
+            && let Some(bad) = tris.iter().find(|&&k| k >= n)
+        {
+            return Err((
+                *at,
+                format!("triangle {bad} but the file has {n} triangles"),
+            ));
+        }
+    }
+    Ok(file)
+}
+
+/// Runs `check` on every query of a parsed file, catching panics per
+/// query; `setup` runs once (building the mesh), and its error is the
+/// first triangle line's problem.
+fn mesh_queries<S>(
+    lines: &[Vec<&str>],
+    setup: impl Fn(&MeshFile) -> Result<S, String>,
+    check: impl Fn(&MeshFile, &S, &MeshQuery) -> Result<Verdict, String>,
+) -> Vec<(usize, Outcome)> {
+    let file = match parse_ray_mesh(lines) {
+        Ok(file) => file,
+        Err((i, e)) => return vec![(i, Ok(Err(e)))],
+    };
+    let state = match catch_unwind(AssertUnwindSafe(|| setup(&file))) {
+        Ok(Ok(state)) => state,
+        Ok(Err(e)) => {
+            return vec![(
+                file.triangle_lines.first().copied().unwrap_or(0),
+                Ok(Err(e)),
+            )];
+        }
+        Err(p) => return vec![(0, Err(p))],
+    };
+    file.queries
+        .iter()
+        .map(|(i, q)| {
+            let outcome = catch_unwind(AssertUnwindSafe(|| check(&file, &state, q)));
+            (*i, outcome)
+        })
+        .collect()
+}
+
+/// What the crate's checker builds once per file: the mesh, and for each
+/// triangle whether all three of its edges are shared by exactly two
+/// triangles of the file (the watertight check's condition).
+struct CrateMesh {
+    mesh: TriangleMesh,
+    closed: Vec<bool>,
+}
+
+fn crate_mesh_setup(file: &MeshFile) -> Result<CrateMesh, String> {
+    let mesh = TriangleMesh::new(&file.vertices, &file.triangles).map_err(|e| e.to_string())?;
+    let mut uses: BTreeMap<(u32, u32), usize> = BTreeMap::new();
+    let edges = |t: &[u32; 3]| {
+        [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])].map(|(a, b)| (a.min(b), a.max(b)))
+    };
+    for t in &file.triangles {
+        for e in edges(t) {
+            *uses.entry(e).or_default() += 1;
+        }
+    }
+    let closed = file
+        .triangles
+        .iter()
+        .map(|t| edges(t).iter().all(|e| uses[e] == 2))
+        .collect();
+    Ok(CrateMesh { mesh, closed })
+}
+
+/// The crate on one `ray_mesh` query.
+///
+/// `r`: the exact variant (`closest_hit_with::<Exact>`) must agree on hit
+/// or miss, give `t` within 4 ulps of the fixture's and one of the listed
+/// triangles, and `occluded_with::<Exact>` must agree. The watertight
+/// default must not miss where the exact point is shared (two or more
+/// triangles listed) in a closed part of the mesh (every edge of every
+/// listed triangle shared by exactly two triangles: a closed fan around
+/// the point) and the ray crosses the surface there (every listed triangle
+/// faces the ray on the same side, exactly: the fan's projection along the
+/// ray covers the point, where its guarantee holds). A ray lying in the
+/// plane of a listed triangle, and a ray touching a silhouette edge or
+/// vertex (the fan folds: its triangles face the ray on different sides,
+/// and the shared edge's one rounded sign puts the ray outside all of
+/// them or inside), it may call a miss (documented in `scene`).
+///
+/// `s`: `occluded_between_with::<Exact>` must equal `blocked`.
+fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result<Verdict, String> {
+    match q {
+        MeshQuery::Ray { o, d, want } => {
+            let ray = Ray::new(*o, *d).map_err(|e| e.to_string())?;
+            let exact = m.mesh.closest_hit_with::<Exact>(&ray, Interval::FORWARD);
+            let occluded = m.mesh.occluded_with::<Exact>(&ray, Interval::FORWARD);
+            let got = exact.map(|h| (h.hit.t, h.triangle as usize));
+            let ok = occluded == want.is_some()
+                && match (want, got) {
+                    (None, None) => true,
+                    (Some((t, tris)), Some((gt, gi))) => {
+                        ulps_between(gt, *t) <= ROOT_ULPS && tris.contains(&gi)
+                    }
+                    _ => false,
+                };
+            if !ok {
+                return Ok(Verdict::Mismatch {
+                    expected: format!("exact {want:?}"),
+                    got: format!("exact {got:?}, occluded {occluded}"),
+                });
+            }
+            if let Some((_, tris)) = want
+                && tris.len() >= 2
+                && tris.iter().all(|&i| m.closed[i])
+            {
+                let lines: Vec<_> = tris
+                    .iter()
+                    .map(|&i| {
+                        let v = file.triangles[i].map(|k| file.vertices[k as usize]);
+                        oracle::line_triangle(*o, *d, v)
+                    })
+                    .collect();
+                let in_plane = lines.iter().any(|l| l.coplanar);
+                let crosses = lines.iter().all(|l| l.front == lines[0].front);
+                if !in_plane && crosses && m.mesh.closest_hit(&ray, Interval::FORWARD).is_none() {
+                    return Ok(Verdict::Mismatch {
+                        expected: format!("a watertight hit at the shared point of {tris:?}"),
+                        got: "a watertight miss".to_string(),
+                    });
+                }
+            }
+            Ok(Verdict::Pass)
+        }
+        MeshQuery::Segment { p, q, blocked } => {
+            let got = m
+                .mesh
+                .occluded_between_with::<Exact>(*p, *q)
+                .map_err(|e| e.to_string())?;
+            Ok(verdict(
+                got == *blocked,
+                format!("blocked {blocked}"),
+                format!("blocked {got}"),
+            ))
+        }
+    }
+}
+
+fn crate_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    mesh_queries(lines, crate_mesh_setup, crate_ray_mesh_query)
+}
+
+/// The brute-force oracle (`exactray_oracle::mesh_oracle`) must reproduce
+/// every answer exactly: hit or miss, `t` the correctly rounded exact
+/// first parameter, the same list of triangles, `blocked`.
+fn oracle_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |file: &MeshFile| -> Result<Vec<[usize; 3]>, String> {
+        Ok(file
+            .triangles
+            .iter()
+            .map(|t| t.map(|k| k as usize))
+            .collect())
+    };
+    mesh_queries(lines, setup, |file, tris, q| match q {
+        MeshQuery::Ray { o, d, want } => {
+            if *d == [0.0; 3] {
+                return Err("zero direction".to_string());
+            }
+            let got = mesh_oracle::ray_mesh(*o, *d, &file.vertices, tris)
+                .map(|(t, on)| (oracle::ratio_to_f64(&t.num, &t.den), on));
+            Ok(verdict(
+                got == *want,
+                format!("{want:?}"),
+                format!("{got:?}"),
+            ))
+        }
+        MeshQuery::Segment { p, q, blocked } => {
+            let got = mesh_oracle::segment_mesh(*p, *q, &file.vertices, tris);
+            Ok(verdict(
+                got == *blocked,
+                format!("blocked {blocked}"),
+                format!("blocked {got}"),
+            ))
+        }
+    })
+}
+
+// ---------------------------------------------------------------------------
 // Files
 
 /// The fixture files, sorted so that reports are stable: the built-in ones,
@@ -906,21 +1233,24 @@ fn malformed_lines_are_rejected() {
     );
 }
 
+/// A whole-file checker's outcomes on the lines of `text`: `Some(true)` a
+/// pass, `Some(false)` a mismatch, `None` a line that cannot be parsed (or
+/// a panic).
+fn file_outcomes(check: FileChecker, text: &str) -> Vec<(usize, Option<bool>)> {
+    let lines: Vec<Vec<&str>> = text.lines().map(|l| l.split(' ').collect()).collect();
+    check(&lines)
+        .into_iter()
+        .map(|(i, o)| match o {
+            Ok(Ok(Verdict::Pass)) => (i, Some(true)),
+            Ok(Ok(Verdict::Mismatch { .. })) => (i, Some(false)),
+            Ok(Err(_)) | Err(_) => (i, None),
+        })
+        .collect()
+}
+
 #[test]
 fn nearest_files_are_parsed_strictly() {
-    let lines = |text: &'static str| -> Vec<Vec<&'static str>> {
-        text.lines().map(|l| l.split(' ').collect()).collect()
-    };
-    let outcomes = |check: FileChecker, text: &'static str| -> Vec<(usize, Option<bool>)> {
-        check(&lines(text))
-            .into_iter()
-            .map(|(i, o)| match o {
-                Ok(Ok(Verdict::Pass)) => (i, Some(true)),
-                Ok(Ok(Verdict::Mismatch { .. })) => (i, Some(false)),
-                Ok(Err(_)) | Err(_) => (i, None),
-            })
-            .collect()
-    };
+    let outcomes = file_outcomes;
     // Points 0 and 2 are at distance 1 from the first query, point 1 at 1.5.
     let good = "p 0 0 1\np 0 0 -1.5\np 1 0 0\nq 0 0 0 0 2\nq 0 0 -2 1";
     for check in [crate_nearest as FileChecker, oracle_nearest] {
@@ -958,4 +1288,62 @@ fn nearest_files_are_parsed_strictly() {
     assert_eq!(set.nearest([0.0, 0.0, 1e300]), [0, 1]);
     assert_eq!(set.nearest([5e-324, 0.0, 0.0]), [0]);
     assert_eq!(set.nearest([1.5, 1e300, 0.0]), [2]);
+}
+
+#[test]
+fn ray_mesh_files_are_parsed_strictly() {
+    let outcomes = file_outcomes;
+    // The unit square in two triangles: a ray through the shared diagonal,
+    // a ray in the plane entering through the edge x = 0 at t = 0.5, a
+    // miss, a blocked and an unblocked segment.
+    let square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 0 1 2\nf 0 2 3";
+    let good = format!(
+        "{square}\nr 0.5 0.5 2 0 0 -1 1 2 0 1\nr -1 0.25 0 2 0 0 1 0.5 1\nr 0.5 0.5 2 0 0 1 0\n\
+         s 0.5 0.5 1 0.5 0.5 -1 1\ns 0.5 0.5 1 0.5 0.5 0.5 0"
+    );
+    for check in [crate_ray_mesh as FileChecker, oracle_ray_mesh] {
+        assert_eq!(
+            outcomes(check, &good),
+            [6, 7, 8, 9, 10].map(|i| (i, Some(true)))
+        );
+        // Wrong answers: another t, a triangle not containing the point, a
+        // hit called a miss, a blocked segment called free.
+        for (wrong, line) in [
+            ("r 0.5 0.5 2 0 0 -1 1 2.5 0 1", 6),
+            ("r -1 0.25 0 2 0 0 1 0.5 0", 6),
+            ("r 0.5 0.5 2 0 0 -1 0", 6),
+            ("s 0.5 0.5 1 0.5 0.5 -1 0", 6),
+        ] {
+            let text = format!("{square}\n{wrong}");
+            assert_eq!(outcomes(check, &text), [(line, Some(false))], "{wrong}");
+        }
+        for (bad, line) in [
+            ("v 0 0\nf 0 0 0", 0),                         // too few fields
+            ("v 0 0 0 1", 0),                              // too many
+            ("v 0 0 x", 0),                                // bad number
+            ("v 0 0 inf", 0),                              // non-finite
+            ("v 0 0 0\nf 0 0 1", 1),                       // vertex index out of range
+            ("v 0 0 0\nf 0 0 -1", 1),                      // negative index
+            ("v 0 0 0\nf 0 0 +0", 1),                      // signed index
+            ("v 0 0 0\nf 0 0 4294967296", 1),              // beyond u32
+            ("v 0 0 0\nf 0 0 0\nr 0 0 1 0 0 -1 1 0 1", 2), // triangle out of range
+            ("v 0 0 0\nf 0 0 0\nr 0 0 1 0 0 -1 1 0", 2),   // no triangle
+            ("v 0 0 0\nf 0 0 0\nr 0 0 1 0 0 -1 2 1 0", 2), // bad hit
+            ("v 0 0 0\nf 0 0 0\nr 0 0 1 0 0 -1 0 1", 2),   // a miss with a t
+            ("v 0 0 0\nr 0 0 1 0 0 0 0", 1),               // zero direction
+            ("v 0 0 0\ns 0 0 1 0 0 0 2", 1),               // bad blocked
+            ("v 0 0 0\ns 0 0 1 0 0 0", 1),                 // too few
+            ("v 0 0 0\nq 0 0 1", 1),                       // unknown line
+        ] {
+            assert_eq!(outcomes(check, bad), [(line, None)], "{bad:?}");
+        }
+        // Degenerate triangles (a repeated vertex, collinear vertices) are
+        // never hit, and no query panics on them.
+        let degenerate = "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 0 1 2\nf 0 0 1\n\
+                          r 1 1 2 0 0 -1 0\ns -1 -1 -1 3 3 3 0";
+        assert_eq!(
+            outcomes(check, degenerate),
+            [(5, Some(true)), (6, Some(true))]
+        );
+    }
 }

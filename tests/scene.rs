@@ -9,7 +9,9 @@ use exactray::query::ray::{Ray, RayCast};
 use exactray::scene::{TriangleMesh, spawn_ray, spawn_ray_to};
 use exactray::shape::Triangle;
 use exactray::testing::{SplitMix64, TiledMesh, unit_vector};
+use exactray_oracle::oracle;
 use glam::DVec3;
+use num_bigint::BigInt;
 
 /// Which test a brute-force loop uses.
 #[derive(Clone, Copy, Debug)]
@@ -18,24 +20,46 @@ enum Test {
     Exact,
 }
 
-/// The closest hit by a loop over every triangle: the least certified `t`
-/// (`Triangle`'s `RayCast` for the watertight test, `cast_exact` for the
-/// exact one), the lower index on ties; triangles the mesh leaves out
-/// (degenerate, or a vanishing rounded normal) skipped.
+/// The closest hit by a loop over every triangle: for the watertight test
+/// (`Triangle`'s `RayCast`) the least certified `t`, the lower index on
+/// ties; for the exact one (`cast_exact_closed`, which admits the same
+/// triangles in `range` as the mesh) the least exact parameter, compared
+/// as big-integer fractions by the oracle (these rays lie in no
+/// triangle's plane), the lower index on exact ties. Triangles the mesh
+/// leaves out (degenerate, or a vanishing rounded normal) skipped.
 fn brute(tris: &[Triangle], ray: &Ray, range: Interval, test: Test) -> Option<(u32, f64)> {
     let mut best: Option<(u32, f64)> = None;
+    let mut best_exact: Option<(BigInt, BigInt)> = None;
     for (i, tri) in tris.iter().enumerate() {
         if tri.is_degenerate() || tri.normal() == DVec3::ZERO {
             continue;
         }
         let t = match test {
             Test::Watertight => tri.cast(ray, range).map(|h| h.t),
-            Test::Exact => tri.cast_exact(ray, range).map(|h| h.t),
+            Test::Exact => tri.cast_exact_closed(ray, range).map(|h| h.t),
         };
-        if let Some(t) = t
-            && best.is_none_or(|(_, bt)| t < bt)
-        {
-            best = Some((i as u32, t));
+        let Some(t) = t else { continue };
+        match test {
+            Test::Watertight => {
+                if best.is_none_or(|(_, bt)| t < bt) {
+                    best = Some((i as u32, t));
+                }
+            }
+            Test::Exact => {
+                let line = oracle::line_triangle(
+                    ray.origin().to_array(),
+                    ray.direction().to_array(),
+                    tri.vertices().map(|p| p.to_array()),
+                );
+                let exact = line.t.expect("an exact hit off the plane crosses it");
+                let earlier = best_exact
+                    .as_ref()
+                    .is_none_or(|(n, d)| &exact.0 * d < n * &exact.1);
+                if earlier {
+                    best = Some((i as u32, t));
+                    best_exact = Some(exact);
+                }
+            }
         }
     }
     best

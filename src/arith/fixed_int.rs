@@ -95,6 +95,17 @@ impl<const N: usize> FixedInt<N> {
         r
     }
 
+    /// The same value in `M` limbs, sign-extended; for `M < N` the value
+    /// must fit (the high limbs dropped are copies of the sign).
+    #[inline]
+    pub(crate) fn widen<const M: usize>(&self) -> FixedInt<M> {
+        let fill = if self.is_negative() { u64::MAX } else { 0 };
+        let mut r = FixedInt { limbs: [fill; M] };
+        let n = N.min(M);
+        r.limbs[..n].copy_from_slice(&self.limbs[..n]);
+        r
+    }
+
     /// `true` when negative.
     #[inline(always)]
     pub(crate) fn is_negative(&self) -> bool {

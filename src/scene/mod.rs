@@ -37,9 +37,29 @@
 //! parameter of the crossing of its plane ([`TriangleTest::certified_t`],
 //! within 4 units of rounding of the exact one) is admitted by the range:
 //! the same rule as `Triangle`'s [`RayCast`]. The closest hit is the one
-//! with the least certified parameter, the lower triangle index on ties.
-//! Degenerate triangles, and triangles so thin that their rounded normal
-//! vanishes, are left out of the hierarchy: never hit.
+//! with the least certified parameter, the lower triangle index on ties
+//! ([`TriangleTest::precedes`]). Degenerate triangles, and triangles so
+//! thin that their rounded normal vanishes, are left out of the
+//! hierarchy: never hit.
+//!
+//! # The exact rule
+//! With [`Exact`] the triangles are closed sets and every decision is
+//! exact (FORMAT.md's `ray_mesh` rule): a ray lying in a triangle's plane
+//! touches it along a segment and hits it where it enters (at the range's
+//! start when it starts inside; [`Triangle::cast_exact_closed`]); two hits
+//! whose certified parameters lie within their error of each other are
+//! ordered by their exact parameters, compared in integers, the lower
+//! index on exactly equal ones, so the winner contains the exact first
+//! point met; and [`TriangleMesh::occluded_between_with`] decides on the
+//! exact segment from `p` to `q`. The watertight default keeps its
+//! rounded rules: a ray in a triangle's plane is a miss wherever its
+//! determinant rounds to zero (it may be a hit where it does not), a ray
+//! that only touches a silhouette edge or vertex (the triangles there face
+//! it on different sides) may be a miss (the shared edge's one rounded
+//! sign puts it inside both triangles or outside both), and near ties are
+//! ordered by the certified parameters. Where the ray crosses the surface
+//! at a shared edge or vertex of a closed or tiled part of a mesh, it is
+//! never missed.
 //!
 //! With [`Exact`], every hit is a crossing of the exact segment with the
 //! triangle, so its box is never culled and the queries equal a loop over
@@ -370,7 +390,7 @@ impl TriangleMesh {
             best: None,
             test: PhantomData,
         };
-        walk(&self.bvh, &BoxRay::of(ray), range, &mut v);
+        walk(&self.bvh, &BoxRay::<0>::of(ray), range, &mut v);
         let (t, triangle, th) = v.best?;
         let tri = self.leaf_shape(triangle);
         let normal = tri.normal();
@@ -406,25 +426,65 @@ impl TriangleMesh {
             found: false,
             test: PhantomData,
         };
-        walk(&self.bvh, &BoxRay::of(ray), range, &mut v);
+        walk(&self.bvh, &BoxRay::<0>::of(ray), range, &mut v);
         v.found
     }
 
     /// Whether the segment from `p` to `q` meets the mesh (watertight
     /// test): the ray `p + t fl(q - p)` for `t` in `[0, 1]`, whose end is
     /// `q` up to the rounding of the difference. Both ends count; to leave
-    /// a surface use [`spawn_ray_to`].
+    /// a surface use [`spawn_ray_to`]. See
+    /// [`TriangleMesh::occluded_between_with`].
     ///
     /// # Errors
-    /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
-    /// infinite coordinate, or `"direction"` when `q - p` overflows. `p ==
-    /// q` is no segment: `Ok(false)`.
+    /// As [`TriangleMesh::occluded_between_with`].
+    #[inline]
     pub fn occluded_between(
         &self,
         p: impl IntoDVec3,
         q: impl IntoDVec3,
     ) -> Result<bool, InputError> {
-        Ok(spawn::segment(p, q)?.is_some_and(|(ray, range)| self.occluded(&ray, range)))
+        self.occluded_between_with::<Watertight>(p, q)
+    }
+
+    /// Whether the closed segment from `p` to `q` meets the mesh with the
+    /// triangle test `T` ([`TriangleTest::segment_hit`]): for
+    /// [`Watertight`] the ray `p + t fl(q - p)`, `t` in `[0, 1]`, whose end
+    /// is `q` up to the rounding of the difference; for [`Exact`] the
+    /// exact segment, decided exactly (its end is `q` itself, and a
+    /// segment in a triangle's plane meets it where their closed sets
+    /// meet). Both ends count; the walk stops at the first triangle met.
+    /// Never allocates.
+    ///
+    /// The boxes are culled with the ray `p + t fl(q - p)`, widened by one
+    /// more rounding than a ray query's (`traverse.rs`): the exact
+    /// segment's slab parameters are the ray's times `1 + δ`, `|δ| <= u`,
+    /// so no box the exact segment meets is culled.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
+    /// infinite coordinate, or `"direction"` when `q - p` overflows. `p ==
+    /// q` is no segment: `Ok(false)`.
+    ///
+    /// [`Exact`]: crate::query::ray::Exact
+    pub fn occluded_between_with<T: TriangleTest>(
+        &self,
+        p: impl IntoDVec3,
+        q: impl IntoDVec3,
+    ) -> Result<bool, InputError> {
+        let q = q.into_dvec3();
+        let Some((ray, unit)) = spawn::segment(p, q)? else {
+            return Ok(false);
+        };
+        let mut v = SegmentHit::<T> {
+            mesh: self,
+            ray: &ray,
+            prepared: T::prepare(&ray),
+            q,
+            found: false,
+        };
+        walk(&self.bvh, &BoxRay::<1>::of(&ray), unit, &mut v);
+        Ok(v.found)
     }
 }
 
@@ -465,9 +525,11 @@ impl<T: TriangleTest> Visitor for Closest<'_, T> {
             if let Some((t, hit)) =
                 certified_hit::<T>(self.mesh, self.ray, &self.prepared, self.range, index)
             {
-                let better = self
-                    .best
-                    .is_none_or(|(bt, bi, _)| t < bt || (t == bt && index < bi));
+                let better = self.best.is_none_or(|(bt, bi, _)| {
+                    T::precedes(self.ray, self.range, (t, index), (bt, bi), |i| {
+                        self.mesh.leaf_shape(i)
+                    })
+                });
                 if better {
                     self.best = Some((t, index, hit));
                 }
@@ -496,6 +558,34 @@ impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
     fn leaf(&mut self, triangles: &[u32]) -> bool {
         self.found = triangles.iter().any(|&index| {
             certified_hit::<T>(self.mesh, self.ray, &self.prepared, self.range, index).is_some()
+        });
+        self.found
+    }
+}
+
+struct SegmentHit<'a, T: TriangleTest> {
+    mesh: &'a TriangleMesh,
+    ray: &'a Ray,
+    prepared: T::Prepared,
+    q: DVec3,
+    found: bool,
+}
+
+impl<T: TriangleTest> Visitor for SegmentHit<'_, T> {
+    #[inline]
+    fn max(&self) -> f64 {
+        1.0
+    }
+
+    #[inline]
+    fn leaf(&mut self, triangles: &[u32]) -> bool {
+        self.found = triangles.iter().any(|&index| {
+            T::segment_hit(
+                self.ray,
+                &self.prepared,
+                self.q,
+                &self.mesh.leaf_shape(index),
+            )
         });
         self.found
     }

@@ -541,7 +541,7 @@ impl Scene {
         for &id in &self.unbounded {
             v.consider(id);
         }
-        walk(&self.bvh, &BoxRay::of(ray), walked(range), &mut v);
+        walk(&self.bvh, &BoxRay::<0>::of(ray), walked(range), &mut v);
         v.best
     }
 
@@ -567,7 +567,7 @@ impl Scene {
             test: PhantomData,
         };
         if !v.leaf(&self.unbounded) {
-            walk(&self.bvh, &BoxRay::of(ray), walked(range), &mut v);
+            walk(&self.bvh, &BoxRay::<0>::of(ray), walked(range), &mut v);
         }
         v.found
     }

@@ -21,12 +21,19 @@
 //! below the exact entry, the widened exit above the exact exit, and a box
 //! whose exact slabs meet the range is never culled. `W = gamma(7)`
 //! covers `gamma(4)` and the three roundings of the widening itself
-//! (each within `u` of `|t'|`); `S = 2^-1070` covers the underflows. This is
-//! Ize's ("Robust BVH Ray Traversal", JCGT 2(2), 2013) padding of `t_far`
-//! by `1 + 2 gamma(3)`, written for entries and exits of either sign (a
+//! (each within `u` of `|t'|`); `S = 2^-1070` covers the underflows.
+//! This is Ize's ("Robust BVH Ray Traversal", JCGT 2(2), 2013) padding
+//! of `t_far` by `1 + 2 gamma(3)`, written for entries and exits of either sign (a
 //! query's range may start below zero) and for `f64`. The range's own
 //! bounds are widened too: a closest-hit query compares certified
 //! parameters within `4u` of the exact ones, and `W` covers that as well.
+//!
+//! A segment query culls with the ray `p + t fl(q - p)` for its exact
+//! segment from `p` to `q`: each exact slab parameter `(b - p_k) / (q_k -
+//! p_k)` is the ray's `(b - p_k) / fl(q_k - p_k)` times `1 + δ`, `|δ| <= u`
+//! (and `fl(q_k - p_k)` is zero exactly when `q_k = p_k`, with the same
+//! sign otherwise): one more rounding, so its walk widens by `gamma(8)`
+//! (`BoxRay<1>`).
 //!
 //! A zero direction coordinate has an infinite reciprocal: the slab's `t`
 //! are `±inf` (the origin outside the slab: empty; inside: every `t`), and
@@ -43,15 +50,14 @@ use crate::interval::Interval;
 use crate::query::ray::Ray;
 use glam::DVec3;
 
-/// The relative widening `W` of the module docs.
-const WIDEN: f64 = gamma(7);
-
 /// The absolute widening `S` of the module docs, `2^-1070`.
 const SLACK: f64 = f64::from_bits(1 << 4);
 
-/// A ray prepared for the slab test.
+/// A ray prepared for the slab test; `E` more roundings of each slab
+/// parameter covered (1 for a segment's exact end, see
+/// `TriangleMesh::occluded_between_with`).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct BoxRay {
+pub(super) struct BoxRay<const E: u32 = 0> {
     origin: DVec3,
     direction: DVec3,
     inv: DVec3,
@@ -61,8 +67,13 @@ pub(super) struct BoxRay {
     negative: [bool; 3],
 }
 
-impl BoxRay {
-    pub(super) fn of(ray: &Ray) -> BoxRay {
+impl<const E: u32> BoxRay<E> {
+    /// The relative widening `W` of the module docs, `gamma(7 + E)`: `E`
+    /// more roundings of the slab parameters (each relative `u`, so
+    /// `|t - t'| <= gamma(4 + E) |t'|`) and the widening's own three.
+    const WIDEN: f64 = gamma(7 + E);
+
+    pub(super) fn of(ray: &Ray) -> BoxRay<E> {
         let d = ray.direction();
         let inv = DVec3::ONE / d;
         let divide = (0..3).any(|k| d[k] != 0.0 && !inv[k].is_normal());
@@ -114,8 +125,8 @@ impl BoxRay {
         if near == f64::INFINITY {
             return None;
         }
-        let lower = near - (WIDEN * near.abs() + SLACK);
-        (lower <= far + (WIDEN * far.abs() + SLACK)).then_some(lower)
+        let lower = near - (Self::WIDEN * near.abs() + SLACK);
+        (lower <= far + (Self::WIDEN * far.abs() + SLACK)).then_some(lower)
     }
 }
 
@@ -132,7 +143,12 @@ pub(super) trait Visitor {
 /// visitor.max()]` meets, the child of the smaller entry first. The stack holds
 /// one pending child per level: [`MAX_DEPTH`] entries, which the builder's
 /// depth bound never exceeds.
-pub(super) fn walk<V: Visitor>(bvh: &TriangleBvh, ray: &BoxRay, range: Interval, v: &mut V) {
+pub(super) fn walk<V: Visitor, const E: u32>(
+    bvh: &TriangleBvh,
+    ray: &BoxRay<E>,
+    range: Interval,
+    v: &mut V,
+) {
     let Some(root) = bvh.nodes.first() else {
         return;
     };
@@ -226,7 +242,7 @@ mod tests {
             ([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0]),
         ];
         for (o, d) in keeps {
-            let ray = BoxRay::of(&Ray::new(o, d).unwrap());
+            let ray = BoxRay::<0>::of(&Ray::new(o, d).unwrap());
             assert!(ray.meets(&unit, 0.0, f64::INFINITY), "{o:?} {d:?}");
         }
         let culls = [
@@ -236,14 +252,14 @@ mod tests {
             ([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0], 0.99),
         ];
         for (o, d, max) in culls {
-            let ray = BoxRay::of(&Ray::new(o, d).unwrap());
+            let ray = BoxRay::<0>::of(&Ray::new(o, d).unwrap());
             assert!(!ray.meets(&unit, 0.0, max), "{o:?} {d:?}");
         }
         // The touching corner ray with its range ending exactly at t = 1.
-        let corner = BoxRay::of(&Ray::new([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0]).unwrap());
+        let corner = BoxRay::<0>::of(&Ray::new([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0]).unwrap());
         assert!(corner.meets(&unit, 0.0, 1.0));
         // Which path each direction takes.
-        let divides = |d: [f64; 3]| BoxRay::of(&Ray::new([0.0; 3], d).unwrap()).divide;
+        let divides = |d: [f64; 3]| BoxRay::<0>::of(&Ray::new([0.0; 3], d).unwrap()).divide;
         assert!(divides([0.0, -tiny, 1.0]) && divides([huge, 0.0, 0.0]));
         assert!(!divides([0.0, -0.0, 1.0]) && !divides([-1.0, 2.0, 1e300]));
     }

@@ -352,4 +352,7 @@ void gen_ray_cylinder_files(const std::string& outdir);
 void gen_ray_quadric_files(const std::string& outdir);
 void gen_ray_triangle_files(const std::string& outdir);
 
+// ray_mesh.cpp: ray_mesh-<mesh>.txt, one mesh per file.
+void gen_ray_mesh_files(const std::string& outdir);
+
 }  // namespace fixtures

@@ -9,8 +9,9 @@
 // their own files: common.h (number types, randomness, exact IEEE helpers,
 // the sign-file Writer), predicates.cpp (orient2d, orient3d, plane_side),
 // nearest.cpp, ray.h (what the ray kinds share: exact roots, RayWriter),
-// ray_quadrics.cpp (ray_sphere, ray_cylinder, ray_quadric) and
-// ray_triangle.cpp.
+// ray_quadrics.cpp (ray_sphere, ray_cylinder, ray_quadric),
+// ray_triangle.cpp and ray_mesh.cpp (one mesh per file with closest-hit and
+// shadow-segment queries).
 //
 // Determinism: the output must be byte-identical on every machine and every
 // run, so the inputs come only from our own splitmix64 and from exact IEEE
@@ -56,6 +57,7 @@ const KindEntry KINDS[] = {
     {"ray_cylinder", nullptr, gen_ray_cylinder_files},
     {"ray_quadric", nullptr, gen_ray_quadric_files},
     {"ray_triangle", nullptr, gen_ray_triangle_files},
+    {"ray_mesh", nullptr, gen_ray_mesh_files},
 };
 
 }  // namespace

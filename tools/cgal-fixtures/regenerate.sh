@@ -2,7 +2,8 @@
 # Rebuilds the generator and rewrites the fixtures it owns in tests/fixtures/:
 # orient2d.txt, orient3d.txt, plane_side.txt, incircle.txt, insphere.txt,
 # one nearest-<set>.txt per point set, and ray_sphere.txt, ray_cylinder.txt,
-# ray_quadric.txt, ray_triangle.txt (other files there are left alone). The
+# ray_quadric.txt, ray_triangle.txt, one ray_mesh-<mesh>.txt per mesh (other
+# files there are left alone). The
 # output is deterministic: rerunning gives byte-identical files.
 #
 #   tools/cgal-fixtures/regenerate.sh          rewrite tests/fixtures/

@@ -17,6 +17,11 @@ little-endian, fields in order):
 - ray_quadrics: a mode byte (0 sphere, 1 cylinder, 5 quadric: bit 1 clear
   means raw bit patterns), then 16 u64 bit patterns.
 - roots: 3 u64 bit patterns (a, b, c).
+- ray_mesh: a mode byte (mode % 8 == 7: raw bit patterns; 3 + mode / 8 % 6
+  vertices), a scale byte (i8: 2^(4k)), the vertices (3 i8 each, or 3 u64
+  bit patterns), a triangle-count byte (1 + b % 8), 3 index bytes per
+  triangle, an edit byte and a pick byte, the origin and direction (as the
+  vertices), two i8 for the in-plane edit.
 - predicates: a selector byte (predicate = selector % 5, mode = selector / 5
   % 4: 2 takes a case from the library's hard generators, 3 the same with
   edits that may plant a NaN or an infinity), an input-class byte (% 6:
@@ -118,6 +123,37 @@ def predicate_cases(rng):
         yield bytes([pred + 5 * mode, cls]) + struct.pack("<Q", rng.getrandbits(64)) + bytes([edits]) + tail
 
 
+def mesh_cases(rng):
+    # Small meshes: fans around vertex 0 (shared edges) or random index
+    # triples, lattice coordinates (raw bit patterns one time in ten), and
+    # each of the target's edits.
+    while True:
+        raw = rng.random() < 0.1
+        nv_sel = rng.randrange(6)
+        nv = 3 + nv_sel
+        mode = (7 if raw else rng.randrange(7)) + 8 * nv_sel
+
+        def point():
+            if raw:
+                return b"".join(struct.pack("<Q", bits(x)) for x in vec(rng))
+            return struct.pack("<3b", *[rng.randrange(-20, 21) for _ in range(3)])
+
+        out = bytes([mode]) + struct.pack("<b", rng.randrange(-8, 9))
+        for _ in range(nv):
+            out += point()
+        nt = rng.randrange(8)
+        out += bytes([nt])
+        for j in range(nt + 1):
+            if rng.random() < 0.7:
+                out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
+            else:
+                out += bytes(rng.randrange(nv) for _ in range(3))
+        out += bytes([rng.randrange(6), rng.randrange(256)])
+        out += point() + point()
+        out += struct.pack("<2b", rng.randrange(-12, 13), rng.randrange(-12, 13))
+        yield out
+
+
 def corpus(name, cases, seed):
     rng = random.Random(seed)
     out = {}
@@ -133,7 +169,8 @@ def main() -> int:
     for name, files in [corpus("ray_triangle", triangle_cases, 12),
                         corpus("ray_quadrics", quadric_cases, 13),
                         corpus("roots", roots_cases, 14),
-                        corpus("predicates", predicate_cases, 15)]:
+                        corpus("predicates", predicate_cases, 15),
+                        corpus("ray_mesh", mesh_cases, 16)]:
         folder = ROOT / name
         have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
         if check:

@@ -6,9 +6,13 @@
 //!   polynomial and discriminant signs, the exact line–triangle crossing.
 //! - [`line_oracle`]: lines against spheres, cylinders, cones and general
 //!   quadrics: the exact root count and correctly rounded roots.
+//! - [`mesh_oracle`]: rays and segments against triangle meshes by brute
+//!   force (FORMAT.md's `ray_mesh` rule: closed triangles, a ray in a
+//!   triangle's plane entering it).
 //!
 //! A workspace member of its own (`publish = false`), so that every user
 //! depends on it by name.
 
 pub mod line_oracle;
+pub mod mesh_oracle;
 pub mod oracle;

@@ -185,11 +185,21 @@ fn quotient<const D: usize, const M: usize, const R: usize>(
     let (e1, e2) = (sub(&int(v[1]), &v0), sub(&int(v[2]), &v0));
     let num = det3_wide::<D, M, R>(&[sub(&v0, &oi), e1, e2]);
     let den = det3_wide::<D, M, R>(&[int(d), e1, e2]);
-    let ((mn, en), (md, ed)) = (num.rounded_parts(), den.rounded_parts());
-    if md == 0.0 {
+    let (num, den) = (num.rounded_parts(), den.rounded_parts());
+    if den.0 == 0.0 {
         return f64::NAN;
     }
     // Both scaled by the same power of two (the columns'), which cancels.
+    round_quotient(num, den)
+}
+
+/// `(mn 2^en) / (md 2^ed)` for two values rounded to 53 bits by
+/// `FixedInt::rounded_parts` (`md != 0`), within `(1 + u)^2 / (1 - u) - 1
+/// < 4u` of the exact quotient of the unrounded values when the result is
+/// a normal number, and within `2^-1073` absolutely when it is subnormal;
+/// a non-zero quotient that would round to zero is the smallest subnormal
+/// of its sign, so the sign is always exact.
+pub(super) fn round_quotient((mn, en): (f64, i32), (md, ed): (f64, i32)) -> f64 {
     // `mn / md` lies within [2^-64, 2^64] (or is zero) and is rounded once;
     // the scaling by `2^(en - ed)` in steps of the same sign is exact
     // unless the result is subnormal or overflows.

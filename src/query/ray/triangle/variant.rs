@@ -2,15 +2,20 @@
 //! chooses its variant once and prepares each ray once for all the
 //! triangles it meets: [`TriangleTest`].
 
-use super::{Shear, TriangleHit};
+use super::{Shear, TriangleHit, closed};
+use crate::arith::roundoff::U;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
 use crate::shape::Triangle;
+use core::cmp::Ordering;
+use glam::DVec3;
 
 /// A ray–triangle test: its per-ray setup, then the test of one triangle
 /// with it. Each answer is exactly the one of the matching `Triangle`
-/// method (`cast_mt`, `cast_watertight`, `cast_exact`), whose docs state
-/// its guarantees.
+/// method (`cast_mt`, `cast_watertight`, `cast_exact_closed`), whose docs
+/// state its guarantees; a scene also asks it which of two hits comes
+/// first ([`TriangleTest::precedes`]) and whether a segment meets a
+/// triangle ([`TriangleTest::segment_hit`]).
 ///
 /// ```
 /// use exactray::prelude::*;
@@ -44,12 +49,43 @@ pub trait TriangleTest {
     /// The parameter where `ray`'s line crosses the plane of `tri`, within
     /// [`EXACT_T_ULPS`](super::EXACT_T_ULPS) (4) units of rounding of the
     /// exact one, for a `hit` this test returned: the exact variant's own
-    /// `t`, the others' recomputed (what `Triangle`'s `RayCast` reports).
-    /// NaN where the line is parallel to the plane.
+    /// `t` (for a ray in the plane, its entry), the others' recomputed
+    /// (what `Triangle`'s `RayCast` reports). NaN where the line is
+    /// parallel to the plane.
     #[inline]
     fn certified_t(ray: &Ray, tri: &Triangle, hit: &TriangleHit) -> f64 {
         let _ = hit;
         super::plane_parameter(ray, &tri.v)
+    }
+
+    /// Whether the hit `a` comes before the hit `b` on `ray` in `range`,
+    /// each given as (certified `t`, triangle index), `triangle` giving
+    /// the triangle of an index. The default: the lesser certified `t`,
+    /// the lower index on equal ones. [`Exact`] decides exactly.
+    #[inline(always)]
+    fn precedes<F: Fn(u32) -> Triangle>(
+        ray: &Ray,
+        range: Interval,
+        a: (f64, u32),
+        b: (f64, u32),
+        triangle: F,
+    ) -> bool {
+        let _ = (ray, range, triangle);
+        a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
+    }
+
+    /// Whether the segment from `ray.origin()` to `q` meets `tri`, with
+    /// `ray` the ray `p + t fl(q - p)` (and `prepared` its setup). The
+    /// default: a hit of the ray for `t` in `[0, 1]` whose certified `t` is
+    /// in `[0, 1]`, so the far end is `p + fl(q - p)`, within a rounding of
+    /// `q`. [`Exact`] decides on the exact segment.
+    #[inline(always)]
+    fn segment_hit(ray: &Ray, prepared: &Self::Prepared, q: DVec3, tri: &Triangle) -> bool {
+        let _ = q;
+        let Ok(unit) = Interval::new(0.0, 1.0) else {
+            return false;
+        };
+        Self::hit(prepared, tri, unit).is_some_and(|h| unit.admits(Self::certified_t(ray, tri, &h)))
     }
 }
 
@@ -62,8 +98,12 @@ pub struct MollerTrumbore;
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Watertight;
 
-/// The exact test ([`Triangle::cast_exact`]): hit or miss by exact signs,
-/// `t` within 4 units of rounding.
+/// The exact test under the closed-triangle rule
+/// ([`Triangle::cast_exact_closed`]): hit or miss by exact signs, a ray in
+/// the triangle's plane hitting where it enters, `t` within 4 units of
+/// rounding; hits ordered by their exact parameters
+/// ([`TriangleTest::precedes`]) and segments decided on their exact ends
+/// ([`Triangle::meets_segment_exact`]).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Exact;
 
@@ -114,13 +154,55 @@ impl TriangleTest for Exact {
 
     #[inline]
     fn hit(ray: &Ray, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
-        tri.cast_exact(ray, range)
+        tri.cast_exact_closed(ray, range)
     }
 
-    /// The hit's own `t`: it is the plane parameter already.
+    /// The hit's own `t`: it is the plane parameter already (or the
+    /// coplanar entry).
     #[inline]
     fn certified_t(_ray: &Ray, _tri: &Triangle, hit: &TriangleHit) -> f64 {
         hit.t
+    }
+
+    /// The exact order of the two hits' exact parameters, the lower index
+    /// on equal ones: where the certified `t` cannot separate them, the
+    /// exact parameters are compared in integers (`closed::exact_order`).
+    ///
+    /// Each certified `t` is within `4u |t*| + 2^-1073` of its exact `t*`
+    /// (`EXACT_T_ULPS`; the second term for subnormal results), so
+    /// `|t*| <= (|t| + 2^-1073) / (1 - 4u)` and `|t - t*| <= e(t) =
+    /// 4u (|t| + 2^-1073) / (1 - 4u) + 2^-1073 < 4.01u |t| + 2^-1072`.
+    /// `E(t) = fl(5u |t|) + 2^-1072` is at least that (one rounding of the
+    /// product,
+    /// and the sum's rounding is at most `u` of it). The computed gap
+    /// `fl(|a - b|)` is within `u` of the exact one (exact when subnormal),
+    /// so `fl(|a - b|) > 2 fl(E(a) + E(b))` gives `|a - b| > e(a) + e(b)`:
+    /// the exact parameters are in the certified ones' order.
+    #[inline]
+    fn precedes<F: Fn(u32) -> Triangle>(
+        ray: &Ray,
+        range: Interval,
+        a: (f64, u32),
+        b: (f64, u32),
+        triangle: F,
+    ) -> bool {
+        /// `2^-1072`.
+        const TINY4: f64 = f64::from_bits(4);
+        let e = |t: f64| 5.0 * U * t.abs() + TINY4;
+        if (a.0 - b.0).abs() > 2.0 * (e(a.0) + e(b.0)) {
+            return a.0 < b.0;
+        }
+        match closed::exact_order(ray, range, &triangle(a.1), &triangle(b.1)) {
+            Ordering::Less => true,
+            Ordering::Greater => false,
+            Ordering::Equal => a.1 < b.1,
+        }
+    }
+
+    /// [`Triangle::meets_segment_exact`] from the ray's origin to `q`.
+    #[inline]
+    fn segment_hit(ray: &Ray, _prepared: &Ray, q: DVec3, tri: &Triangle) -> bool {
+        tri.meets_segment_exact(ray.origin(), q)
     }
 }
 
@@ -172,7 +254,10 @@ mod tests {
                         Watertight::hit(&wt, &tri, range),
                         tri.cast_watertight(&ray, range)
                     );
-                    assert_eq!(Exact::hit(&ex, &tri, range), tri.cast_exact(&ray, range));
+                    assert_eq!(
+                        Exact::hit(&ex, &tri, range),
+                        tri.cast_exact_closed(&ray, range)
+                    );
                     hits += Exact::hit(&ex, &tri, range).is_some() as u32;
                 }
             }

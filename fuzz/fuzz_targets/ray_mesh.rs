@@ -1,0 +1,152 @@
+//! The scene's exact queries on small fuzzer-chosen meshes against brute
+//! force with the exact oracle (`exactray_oracle::mesh_oracle`, FORMAT.md's
+//! `ray_mesh` rule): the exact closest hit (hit or miss, a triangle
+//! containing the exact first point, `t` within `EXACT_T_ULPS`), exact
+//! occlusion, and the exact shadow segment; the watertight queries must
+//! not panic and must report only admitted `t`.
+//!
+//! A mesh is 3 to 8 vertices on a small integer lattice scaled by a power
+//! of two (or raw bit patterns), and 1 to 8 triangles over them, so edges
+//! and vertices are shared; then edited towards degeneracy: two vertices
+//! merged, the ray aimed exactly at a vertex or an edge's midpoint, or
+//! laid in a triangle's plane.
+#![no_main]
+
+use arbitrary::{Arbitrary, Unstructured};
+use exactray::interval::Interval;
+use exactray::query::ray::{EXACT_T_ULPS, Exact, Ray};
+use exactray::scene::TriangleMesh;
+use exactray::testing::finite_f64_from_bits;
+use exactray_oracle::mesh_oracle;
+use exactray_oracle::oracle;
+use glam::DVec3;
+use libfuzzer_sys::fuzz_target;
+
+fn lattice(u: &mut Unstructured, raw: bool, scale: f64) -> arbitrary::Result<DVec3> {
+    if raw {
+        let b = <[u64; 3]>::arbitrary(u)?;
+        return Ok(DVec3::from_array(b.map(finite_f64_from_bits)));
+    }
+    let c = <[i8; 3]>::arbitrary(u)?;
+    Ok(DVec3::from_array(c.map(|x| f64::from(x) * 2.0 * scale)))
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut u = Unstructured::new(data);
+    let Ok(mode) = u8::arbitrary(&mut u) else {
+        return;
+    };
+    let raw = mode % 8 == 7;
+    let scale = 2f64.powi(i32::from(i8::arbitrary(&mut u).unwrap_or(0)) * 4);
+    let nv = 3 + usize::from(mode / 8 % 6);
+    let mut vertices = Vec::with_capacity(nv);
+    for _ in 0..nv {
+        let Ok(v) = lattice(&mut u, raw, scale) else {
+            return;
+        };
+        vertices.push(v);
+    }
+    let nt = 1 + usize::from(u8::arbitrary(&mut u).unwrap_or(0) % 8);
+    let mut triangles = Vec::with_capacity(nt);
+    for _ in 0..nt {
+        let Ok(t) = <[u8; 3]>::arbitrary(&mut u) else {
+            return;
+        };
+        triangles.push(t.map(|i| u32::from(i) % nv as u32));
+    }
+    let (Ok(edit), Ok(pick)) = (u8::arbitrary(&mut u), u8::arbitrary(&mut u)) else {
+        return;
+    };
+    let (Ok(mut o), Ok(mut d)) = (lattice(&mut u, raw, scale), lattice(&mut u, raw, scale)) else {
+        return;
+    };
+    let tri = triangles[usize::from(pick) % nt].map(|i| vertices[i as usize]);
+    match edit % 6 {
+        // Two vertices merged.
+        0 => vertices[usize::from(pick) % nv] = vertices[usize::from(pick / 8) % nv],
+        // Aimed exactly at a vertex.
+        1 => d = tri[0] - o,
+        // Aimed at an edge's midpoint (exact on the lattice: coordinates
+        // are even multiples of the scale).
+        2 => d = (tri[0] + tri[1]) * 0.5 - o,
+        // In the triangle's plane: from a lattice point of it, along it.
+        3 => {
+            let (a, b) = (
+                i8::arbitrary(&mut u).unwrap_or(1),
+                i8::arbitrary(&mut u).unwrap_or(1),
+            );
+            let (e1, e2) = (tri[1] - tri[0], tri[2] - tri[0]);
+            o = tri[0] + e1 * f64::from(a) / 8.0 + e2 * f64::from(b) / 8.0;
+            d = e1 * f64::from(b % 5) + e2 * f64::from(a % 7);
+        }
+        // Starting exactly at a vertex.
+        4 => o = tri[usize::from(pick) % 3],
+        _ => {}
+    }
+    let Ok(mesh) = TriangleMesh::new(&vertices, &triangles) else {
+        return;
+    };
+    let Ok(ray) = Ray::new(o, d) else {
+        return;
+    };
+    let verts: Vec<[f64; 3]> = vertices.iter().map(|v| v.to_array()).collect();
+    // The mesh leaves out triangles so thin that their rounded normal
+    // vanishes (never hit; raw bit patterns make them): so does the oracle.
+    let tris: Vec<[usize; 3]> = (0..nt)
+        .filter(|&i| mesh.triangle(i).is_some_and(|t| t.normal() != DVec3::ZERO))
+        .map(|i| triangles[i].map(|k| k as usize))
+        .collect();
+    let index: Vec<usize> = (0..nt)
+        .filter(|&i| mesh.triangle(i).is_some_and(|t| t.normal() != DVec3::ZERO))
+        .collect();
+    let (ro, rd) = (ray.origin().to_array(), ray.direction().to_array());
+    let want = mesh_oracle::ray_mesh(ro, rd, &verts, &tris);
+    let got = mesh.closest_hit_with::<Exact>(&ray, Interval::FORWARD);
+    match (&want, got) {
+        (None, None) => {}
+        (Some((t, on)), Some(h)) => {
+            let on: Vec<usize> = on.iter().map(|&k| index[k]).collect();
+            assert!(
+                on.contains(&(h.triangle as usize)),
+                "{ray:?}: {h:?}, want {on:?}"
+            );
+            assert!(
+                h.hit.t.abs() < f64::MIN_POSITIVE
+                    || oracle::within_units(h.hit.t, &t.num, &t.den, EXACT_T_ULPS as u32),
+                "{ray:?}: t = {:e}",
+                h.hit.t
+            );
+        }
+        // A first parameter beyond f64's range is no hit (the crate's
+        // policy); within a few ulps of f64::MAX either is right.
+        (Some((t, _)), None) => {
+            assert!(
+                oracle::hit_policy(&t.num, &t.den, 0.0, f64::INFINITY, EXACT_T_ULPS as u32)
+                    != Some(true),
+                "{ray:?}: a miss, want {want:?}"
+            );
+        }
+        (None, Some(h)) => panic!("{ray:?}: {h:?}, want a miss"),
+    }
+    let occluded = mesh.occluded_with::<Exact>(&ray, Interval::FORWARD);
+    assert_eq!(occluded, got.is_some(), "{ray:?}");
+    for hit in [mesh.closest_hit(&ray, Interval::FORWARD)]
+        .into_iter()
+        .flatten()
+    {
+        assert!(Interval::FORWARD.admits(hit.hit.t), "{hit:?}");
+    }
+    let _ = mesh.occluded(&ray, Interval::FORWARD);
+    // The segment from o to o + d (rounded: the segment is from o to
+    // whatever q is).
+    let q = o + d;
+    if (q - o).is_finite() && q != o {
+        let blocked = mesh_oracle::segment_mesh(o.to_array(), q.to_array(), &verts, &tris);
+        assert_eq!(
+            mesh.occluded_between_with::<Exact>(o, q),
+            Ok(blocked),
+            "{o:?} {q:?}"
+        );
+        let _ = mesh.occluded_between(o, q);
+    }
+});
