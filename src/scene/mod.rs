@@ -382,6 +382,30 @@ impl TriangleMesh {
     /// ([`MeshHit::hit`]); the hit point and normal are computed once, for
     /// the winner.
     pub fn closest_hit_with<T: TriangleTest>(&self, ray: &Ray, range: Interval) -> Option<MeshHit> {
+        self.closest_counted::<T>(ray, range, None)
+    }
+
+    /// [`TriangleMesh::closest_hit_with`], adding the work it did to
+    /// `stats` (for tests, tuning and the report; the plain query counts
+    /// nothing).
+    pub fn closest_hit_with_stats<T: TriangleTest>(
+        &self,
+        ray: &Ray,
+        range: Interval,
+        stats: &mut TraceStats,
+    ) -> Option<MeshHit> {
+        self.closest_counted::<T>(ray, range, Some(stats))
+    }
+
+    /// The closest hit, its walk counted into `stats` when given (a
+    /// separate instance of the walk, so the plain query has no counters).
+    #[inline(always)]
+    fn closest_counted<T: TriangleTest>(
+        &self,
+        ray: &Ray,
+        range: Interval,
+        stats: Option<&mut TraceStats>,
+    ) -> Option<MeshHit> {
         let mut v = Closest::<T> {
             mesh: self,
             ray,
@@ -390,7 +414,19 @@ impl TriangleMesh {
             best: None,
             test: PhantomData,
         };
-        walk(&self.bvh, &BoxRay::<0>::of(ray), range, &mut v);
+        let boxes = BoxRay::<0>::of(ray);
+        match stats {
+            None => walk(&self.bvh, &boxes, range, &mut v),
+            Some(stats) => walk(
+                &self.bvh,
+                &boxes,
+                range,
+                &mut Counted {
+                    inner: &mut v,
+                    stats,
+                },
+            ),
+        }
         let (t, triangle, th) = v.best?;
         let tri = self.leaf_shape(triangle);
         let normal = tri.normal();
@@ -502,6 +538,40 @@ fn certified_hit<T: TriangleTest>(
     let hit = T::hit(prepared, &tri, range)?;
     let t = T::certified_t(ray, &tri, &hit);
     range.admits(t).then_some((t, hit))
+}
+
+/// The work one query did: see [`TriangleMesh::closest_hit_with_stats`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TraceStats {
+    /// Nodes of the hierarchy the walk looked at (an internal node's two
+    /// box tests, or a leaf's triangles).
+    pub nodes_visited: u64,
+    /// Triangles tested in the leaves reached.
+    pub triangles_tested: u64,
+}
+
+/// A visitor whose walk is counted into `stats`.
+struct Counted<'a, V> {
+    inner: &'a mut V,
+    stats: &'a mut TraceStats,
+}
+
+impl<V: Visitor> Visitor for Counted<'_, V> {
+    #[inline]
+    fn max(&self) -> f64 {
+        self.inner.max()
+    }
+
+    #[inline]
+    fn leaf(&mut self, triangles: &[u32]) -> bool {
+        self.stats.triangles_tested += triangles.len() as u64;
+        self.inner.leaf(triangles)
+    }
+
+    #[inline]
+    fn node(&mut self) {
+        self.stats.nodes_visited += 1;
+    }
 }
 
 struct Closest<'a, T: TriangleTest> {

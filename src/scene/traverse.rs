@@ -137,6 +137,10 @@ pub(super) trait Visitor {
     /// Looks at a leaf's items `order[start .. start + count]` (a mesh's
     /// triangles, a scene's primitives); `true` stops the walk.
     fn leaf(&mut self, triangles: &[u32]) -> bool;
+    /// Called once per node the walk looks at (to count them; nothing for
+    /// an ordinary query).
+    #[inline(always)]
+    fn node(&mut self) {}
 }
 
 /// Walks every leaf whose box the ray's exact segment `[range.min,
@@ -160,6 +164,7 @@ pub(super) fn walk<V: Visitor, const E: u32>(
     let mut top = 0;
     let mut at = 0usize;
     loop {
+        v.node();
         let node = &bvh.nodes[at];
         let next = if node.count > 0 {
             let start = node.link as usize;
