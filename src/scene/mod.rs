@@ -127,6 +127,8 @@ pub(crate) struct Node {
 
 const _: () = assert!(size_of::<Node>() == 56);
 
+/// What the PLOC builder (`ploc.rs`, with `std`) writes nodes with.
+#[cfg(feature = "std")]
 impl Node {
     /// A box holding nothing (`min` above `max`), to grow.
     const EMPTY: Node = Node {

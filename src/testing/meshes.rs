@@ -305,12 +305,17 @@ fn pinhole(
     let forward = look.normalize();
     let right = forward.cross(DVec3::Z).normalize();
     let up = right.cross(forward);
-    let side = sqrt(count as f64).ceil().max(1.0);
+    // The smallest square image holding `count` pixels.
+    let mut side = 1;
+    while side * side < count {
+        side += 1;
+    }
+    let side_f = side as f64;
     (0..count)
         .map(|k| {
-            let (i, j) = ((k as f64) % side, (k as f64 / side).floor());
-            let x = ((i + rng.next_f64()) / side * 2.0 - 1.0) * half_width;
-            let y = ((j + rng.next_f64()) / side * 2.0 - 1.0) * half_width;
+            let (i, j) = ((k % side) as f64, (k / side) as f64);
+            let x = ((i + rng.next_f64()) / side_f * 2.0 - 1.0) * half_width;
+            let y = ((j + rng.next_f64()) / side_f * 2.0 - 1.0) * half_width;
             (eye, forward + right * x + up * y)
         })
         .collect()
