@@ -756,17 +756,18 @@ pub fn run_spawn(cfg: &Config) -> Vec<Row> {
                 .expect("generated meshes are valid"),
         );
         let mut rng = cfg.rng("spawn", name);
-        let primaries: Vec<Case> = camera_rays(&data, sizes.spawned, &mut rng)
-            .into_iter()
-            .filter_map(|(o, d)| Case::of(o, d, Interval::FORWARD))
-            .collect();
-        let hits: Vec<(Case, MeshHit)> = primaries
-            .iter()
-            .filter_map(|c| {
+        // Camera rays until `spawned` of them hit (about half do): one
+        // secondary ray per primary hit.
+        let mut hits: Vec<(Case, MeshHit)> = Vec::with_capacity(sizes.spawned);
+        while hits.len() < sizes.spawned {
+            let batch = camera_rays(&data, sizes.spawned, &mut rng);
+            hits.extend(batch.into_iter().filter_map(|(o, d)| {
+                let c = Case::of(o, d, Interval::FORWARD)?;
                 mesh.closest_hit_with::<Exact>(&c.ray, c.range)
-                    .map(|h| (*c, h))
-            })
-            .collect();
+                    .map(|h| (c, h))
+            }));
+        }
+        hits.truncate(sizes.spawned);
         let cases = leaves(name, &mesh, &hits, &mut rng);
         let methods: Vec<Box<dyn Measure<Leave, Option<u32>>>> = SPAWNERS
             .iter()
