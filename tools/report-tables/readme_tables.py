@@ -268,6 +268,46 @@ def raster(rep, cells):
     ]
 
 
+SCENE_CLOSEST_METHODS = ["exactray", "exactray-exact", "exactray-ploc", "obvhs", "obvhs-bvh2", "parry3d"]
+SCENE_ANY_METHODS = ["exactray", "exactray-closest", "exactray-exact", "obvhs", "obvhs-bvh2", "parry3d"]
+
+
+def scene_closest(rep, cells):
+    inputs = cells[0]
+    g = lambda m: rep.row("closest_hit", m, inputs)
+    t = lambda m: rep.ns("closest_hit", m, inputs)
+    return [("closest_hit", inputs)], [inputs] + [
+        cell(g(m), wrong_pct1) for m in SCENE_CLOSEST_METHODS
+    ] + [
+        "-" if g("exactray-rayon") is None else ns(t("exactray-rayon")),
+        ratio(t("exactray"), t("obvhs")),
+        ratio(t("exactray"), t("parry3d")),
+    ]
+
+
+def scene_any(rep, cells):
+    inputs = cells[0]
+    g = lambda m: rep.row("any_hit", m, inputs)
+    t = lambda m: rep.ns("any_hit", m, inputs)
+    return [("any_hit", inputs)], [inputs] + [cell(g(m), wrong_pct1) for m in SCENE_ANY_METHODS] + [
+        ratio(t("exactray"), t("exactray-closest")),
+    ]
+
+
+def scene_spawn(rep, cells):
+    inputs = cells[0]
+    g = lambda m: rep.row("spawn", m, inputs)
+    e = g("exactray")
+    return [("spawn", inputs)], [
+        inputs,
+        "-" if e is None else f"{e['cases']:,}",
+    ] + [
+        "-" if g(m) is None else f"{g(m)['errors']:,}" for m in ["exactray", "epsilon-1e-4", "epsilon-1e-8"]
+    ] + [
+        "-" if g(m) is None else ns(g(m)["ns_per_op"]) for m in ["exactray", "epsilon-1e-8"]
+    ]
+
+
 TABLES = [
     (
         "Predicates",
@@ -306,6 +346,27 @@ TABLES = [
         "| inputs | MT | watertight | exact | naive | parry3d |",
         triangle_ulps,
         ["ray_triangle"],
+    ),
+    (
+        "Scenes: closest hit",
+        "| inputs | exactray ns (wrong) | exactray-exact ns (wrong) | exactray-ploc ns (wrong) | obvhs ns (wrong) "
+        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | exactray-rayon ns | exactray / obvhs | exactray / parry3d |",
+        scene_closest,
+        ["closest_hit"],
+    ),
+    (
+        "Scenes: shadow rays",
+        "| inputs | exactray ns (wrong) | exactray-closest ns (wrong) | exactray-exact ns (wrong) | obvhs ns (wrong) "
+        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | exactray / exactray-closest |",
+        scene_any,
+        ["any_hit"],
+    ),
+    (
+        "Scenes: spawned rays",
+        "| situation | secondary rays | exactray self-hits | epsilon-1e-4 self-hits | epsilon-1e-8 self-hits "
+        "| exactray ns | epsilon-1e-8 ns |",
+        scene_spawn,
+        ["spawn"],
     ),
     (
         "Q2 rasterizing",
