@@ -13,14 +13,11 @@ use exactray::scene::{
     AnalyticShape, BatchQueries, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,
     TriangleMesh,
 };
-use exactray::shape::{CappedCylinder, Disk, Plane, Sphere};
+use exactray::shape::{Disk, Plane, Sphere};
 use exactray::testing::{
-    SCENE_PLACES, SpawnedRay, SplitMix64, TiledMesh, random_scene, scene_ray,
-    scenes_with_spawned_rays, small_scenes, spawned_ray, spawned_rays,
+    SCENE_PLACES, SplitMix64, TiledMesh, random_scene, scene_ray, spawned_ray,
 };
 use glam::DVec3;
-use proptest::prelude::*;
-use std::sync::{Arc, LazyLock};
 
 /// The closest hit by a loop over every primitive in id order: each
 /// mesh's `closest_hit_with::<T>` and each shape's `cast` for the whole
@@ -346,110 +343,122 @@ fn bad_input() {
     );
 }
 
-/// Whether the spawned ray's next hit `next` is a false self-intersection:
-/// the surface it left, met again where the exact geometry says it cannot
-/// be: a plane, a disk or a mesh triangle is never
-/// met again (the origin is strictly off its plane and the ray moves away
-/// or along it); a convex solid (sphere, cylinder, cone) left outwards
-/// after a hit from outside is never met again (the solid lies behind
-/// the tangent plane the ray leaves).
-fn met_again(s: &SpawnedRay, scene: &Scene, next: Option<SceneHit>) -> bool {
-    let Some(next) = next.filter(|n| n.primitive == s.hit.primitive) else {
-        return false;
-    };
-    // A mesh may be met again elsewhere, never on the same triangle.
-    let same_surface = match (next.triangle, s.hit.triangle) {
-        (Some(a), Some(b)) => a.triangle == b.triangle,
-        _ => true,
-    };
-    same_surface
-        && match scene.primitive(s.hit.primitive) {
-            Some(Primitive::Mesh(_)) => true,
-            Some(Primitive::Shape(shape)) => match shape {
-                AnalyticShape::Disk(_) | AnalyticShape::Plane(_) => true,
-                AnalyticShape::Sphere(_)
-                | AnalyticShape::Cylinder(_)
-                | AnalyticShape::CappedCylinder(_)
-                | AnalyticShape::Cone(_) => {
-                    s.reflected() && s.primary.direction().dot(s.hit.hit.normal) < 0.0
-                }
-                AnalyticShape::Quadric(_) => false,
-            },
-            None => false,
-        }
-}
+/// The proptests of `testing`'s scene strategies (the crate's `proptest`
+/// feature: `cargo test --features proptest --test scene_shapes`, which
+/// `.ci/run` runs).
+#[cfg(feature = "proptest")]
+mod strategies {
+    use super::*;
+    use exactray::shape::CappedCylinder;
+    use exactray::testing::{SpawnedRay, scenes_with_spawned_rays, small_scenes, spawned_rays};
+    use proptest::prelude::*;
+    use std::sync::{Arc, LazyLock};
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
-
-    /// The strategies: on a small scene, a spawned ray's closest hit is
-    /// the loop's, and it never meets again the surface it leaves where
-    /// the exact geometry says it cannot.
-    #[test]
-    fn spawned_rays_never_return((scene, s) in scenes_with_spawned_rays())
-    {
-        let range = Interval::FORWARD;
-        let next = scene.closest_hit(&s.ray, range);
-        prop_assert_eq!(next, brute::<Watertight>(&scene, &s.ray, range));
-        prop_assert_eq!(scene.occluded(&s.ray, range), next.is_some());
-        prop_assert!(!met_again(&s, &scene, next), "{:?} -> {:?}", s, next);
+    /// Whether the spawned ray's next hit `next` is a false self-intersection:
+    /// the surface it left, met again where the exact geometry says it cannot
+    /// be: a plane, a disk or a mesh triangle is never
+    /// met again (the origin is strictly off its plane and the ray moves away
+    /// or along it); a convex solid (sphere, cylinder, cone) left outwards
+    /// after a hit from outside is never met again (the solid lies behind
+    /// the tangent plane the ray leaves).
+    fn met_again(s: &SpawnedRay, scene: &Scene, next: Option<SceneHit>) -> bool {
+        let Some(next) = next.filter(|n| n.primitive == s.hit.primitive) else {
+            return false;
+        };
+        // A mesh may be met again elsewhere, never on the same triangle.
+        let same_surface = match (next.triangle, s.hit.triangle) {
+            (Some(a), Some(b)) => a.triangle == b.triangle,
+            _ => true,
+        };
+        same_surface
+            && match scene.primitive(s.hit.primitive) {
+                Some(Primitive::Mesh(_)) => true,
+                Some(Primitive::Shape(shape)) => match shape {
+                    AnalyticShape::Disk(_) | AnalyticShape::Plane(_) => true,
+                    AnalyticShape::Sphere(_)
+                    | AnalyticShape::Cylinder(_)
+                    | AnalyticShape::CappedCylinder(_)
+                    | AnalyticShape::Cone(_) => {
+                        s.reflected() && s.primary.direction().dot(s.hit.hit.normal) < 0.0
+                    }
+                    AnalyticShape::Quadric(_) => false,
+                },
+                None => false,
+            }
     }
-}
 
-/// A floor, a ball, a can, a disk and a tiled height field above them.
-fn room() -> Scene {
-    let mut rng = SplitMix64::new(21);
-    let tiled = TiledMesh::new(&mut rng, 6);
-    let vertices: Vec<DVec3> = tiled
-        .vertices
-        .iter()
-        .map(|v| *v + DVec3::new(-3.0, -3.0, 4.0))
-        .collect();
-    let triangles = tiled.indices();
-    let mut builder = SceneBuilder::new();
-    builder
-        .add(Plane::new([0.0; 3], [0.1, 0.0, 1.0]).unwrap())
-        .unwrap();
-    builder
-        .add(Sphere::new([0.0, 0.0, 1.5], 1.0).unwrap())
-        .unwrap();
-    builder
-        .add(CappedCylinder::new([2.0, 1.0, 0.0], [0.0, 0.3, 2.0], 0.7).unwrap())
-        .unwrap();
-    builder
-        .add(Disk::new([-2.0, 1.0, 1.0], [1.0, 1.0, 1.0], 0.8).unwrap())
-        .unwrap();
-    builder
-        .add(TriangleMesh::new(&vertices, &triangles).unwrap())
-        .unwrap();
-    builder.build()
-}
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
 
-static ROOM: LazyLock<Arc<Scene>> = LazyLock::new(|| Arc::new(room()));
+        /// The strategies: on a small scene, a spawned ray's closest hit is
+        /// the loop's, and it never meets again the surface it leaves where
+        /// the exact geometry says it cannot.
+        #[test]
+        fn spawned_rays_never_return((scene, s) in scenes_with_spawned_rays())
+        {
+            let range = Interval::FORWARD;
+            let next = scene.closest_hit(&s.ray, range);
+            prop_assert_eq!(next, brute::<Watertight>(&scene, &s.ray, range));
+            prop_assert_eq!(scene.occluded(&s.ray, range), next.is_some());
+            prop_assert!(!met_again(&s, &scene, next), "{:?} -> {:?}", s, next);
+        }
+    }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    /// A floor, a ball, a can, a disk and a tiled height field above them.
+    fn room() -> Scene {
+        let mut rng = SplitMix64::new(21);
+        let tiled = TiledMesh::new(&mut rng, 6);
+        let vertices: Vec<DVec3> = tiled
+            .vertices
+            .iter()
+            .map(|v| *v + DVec3::new(-3.0, -3.0, 4.0))
+            .collect();
+        let triangles = tiled.indices();
+        let mut builder = SceneBuilder::new();
+        builder
+            .add(Plane::new([0.0; 3], [0.1, 0.0, 1.0]).unwrap())
+            .unwrap();
+        builder
+            .add(Sphere::new([0.0, 0.0, 1.5], 1.0).unwrap())
+            .unwrap();
+        builder
+            .add(CappedCylinder::new([2.0, 1.0, 0.0], [0.0, 0.3, 2.0], 0.7).unwrap())
+            .unwrap();
+        builder
+            .add(Disk::new([-2.0, 1.0, 1.0], [1.0, 1.0, 1.0], 0.8).unwrap())
+            .unwrap();
+        builder
+            .add(TriangleMesh::new(&vertices, &triangles).unwrap())
+            .unwrap();
+        builder.build()
+    }
 
-    /// `small_scenes` with rays of `scene_ray`: closest hit equals the
-    /// loop, occlusion equals a hit.
-    #[test]
-    fn small_scenes_equal_brute_force(scene in small_scenes(), seed in any::<u64>()) {
-        let mut rng = SplitMix64::new(seed);
-        for _ in 0..8 {
-            if let Some(ray) = scene_ray(&mut rng, &scene) {
-                let next = scene.closest_hit(&ray, Interval::FORWARD);
-                prop_assert_eq!(next, brute::<Watertight>(&scene, &ray, Interval::FORWARD));
-                prop_assert_eq!(scene.occluded(&ray, Interval::FORWARD), next.is_some());
+    static ROOM: LazyLock<Arc<Scene>> = LazyLock::new(|| Arc::new(room()));
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        /// `small_scenes` with rays of `scene_ray`: closest hit equals the
+        /// loop, occlusion equals a hit.
+        #[test]
+        fn small_scenes_equal_brute_force(scene in small_scenes(), seed in any::<u64>()) {
+            let mut rng = SplitMix64::new(seed);
+            for _ in 0..8 {
+                if let Some(ray) = scene_ray(&mut rng, &scene) {
+                    let next = scene.closest_hit(&ray, Interval::FORWARD);
+                    prop_assert_eq!(next, brute::<Watertight>(&scene, &ray, Interval::FORWARD));
+                    prop_assert_eq!(scene.occluded(&ray, Interval::FORWARD), next.is_some());
+                }
             }
         }
-    }
 
-    /// `spawned_rays` on a user's scene: a secondary ray never meets again
-    /// the surface it leaves where the exact geometry says it cannot.
-    #[test]
-    fn spawned_rays_in_a_room(s in spawned_rays(ROOM.clone())) {
-        let next = ROOM.closest_hit(&s.ray, Interval::FORWARD);
-        prop_assert_eq!(next, brute::<Watertight>(&ROOM, &s.ray, Interval::FORWARD));
-        prop_assert!(!met_again(&s, &ROOM, next), "{:?} -> {:?}", s, next);
+        /// `spawned_rays` on a user's scene: a secondary ray never meets again
+        /// the surface it leaves where the exact geometry says it cannot.
+        #[test]
+        fn spawned_rays_in_a_room(s in spawned_rays(ROOM.clone())) {
+            let next = ROOM.closest_hit(&s.ray, Interval::FORWARD);
+            prop_assert_eq!(next, brute::<Watertight>(&ROOM, &s.ray, Interval::FORWARD));
+            prop_assert!(!met_again(&s, &ROOM, next), "{:?} -> {:?}", s, next);
+        }
     }
 }
