@@ -157,8 +157,10 @@ pub enum BvhBuilder {
     /// available without `std`.
     BinnedSah,
     /// obvhs's PLOC builder with reinsertion and leaf collapse (`std`),
+    /// run on a thread of its own with a stack sized for its recursion,
     /// falling back to [`BvhBuilder::BinnedSah`] for a tree deeper than
-    /// the walk's stack (see `ploc.rs`).
+    /// the walk's stack, or where that thread cannot start or obvhs
+    /// panics (see `ploc.rs`).
     #[cfg(feature = "std")]
     Ploc(PlocQuality),
 }

@@ -73,9 +73,31 @@ pub(super) fn build(items: &[Item], quality: PlocQuality) -> Option<TriangleBvh>
         });
     }
     let proxies = proxies(items);
-    let bvh2 = build_bvh2(&proxies, quality.params(), &mut Duration::default());
+    // obvhs recurses once per level of its tree (in its passes, and in a
+    // debug build in its validation), and PLOC bounds no depth: on many
+    // identical boxes the tree can be a chain, one level per triangle,
+    // which overflowed a test thread's 2 MiB stack. It builds on a thread
+    // of its own whose stack holds STACK_PER_ITEM per triangle (address
+    // space only: pages are committed as they are touched); where that
+    // thread cannot start, or obvhs panics, the binned builder builds.
+    let stack = STACK_BASE.saturating_add(proxies.len().saturating_mul(STACK_PER_ITEM));
+    let bvh2 = std::thread::scope(|scope| {
+        std::thread::Builder::new()
+            .stack_size(stack)
+            .spawn_scoped(scope, || {
+                build_bvh2(&proxies, quality.params(), &mut Duration::default())
+            })
+            .ok()?
+            .join()
+            .ok()
+    })?;
     convert(&bvh2, items)
 }
+
+/// The builder thread's stack: a base, and room per triangle for one
+/// level of obvhs's recursion (a debug build's frames are the larger).
+const STACK_BASE: usize = 8 << 20;
+const STACK_PER_ITEM: usize = 4 << 10;
 
 /// The items' boxes, centred and scaled (halves first, so that nothing
 /// overflows), in `f32`. Any rounding only moves the tree's shape.
