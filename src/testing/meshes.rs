@@ -277,14 +277,28 @@ fn wall(lo: DVec3, hi: DVec3, axis: usize, high: bool, m: usize) -> SceneMesh {
 
 /// `count` camera rays `(origin, direction)` of a pinhole camera outside
 /// the mesh's box, above and to the side of it, looking at its centre over
-/// a field of view that holds the box. Pixel positions are jittered, so
+/// the narrowest square field of view that holds every vertex. Pixel positions are jittered, so
 /// that rays fall between vertices and edges as they do in a renderer.
 pub fn camera_rays(mesh: &SceneMesh, count: usize, rng: &mut SplitMix64) -> Vec<(DVec3, DVec3)> {
     let (lo, hi) = mesh.bounds();
     let centre = lo * 0.5 + hi * 0.5;
     let size = (hi - lo).max_element();
-    let eye = centre + DVec3::new(0.6, -1.2, 0.9) * size;
-    pinhole(eye, centre - eye, 0.4, count, rng)
+    let eye = centre + DVec3::new(0.1, -0.9, 1.4) * size;
+    // The narrowest square view that holds every vertex.
+    let (forward, right, up) = frame(centre - eye);
+    let half_width = mesh.vertices.iter().fold(0.0f64, |w, &v| {
+        let c = v - eye;
+        w.max(c.dot(right).abs().max(c.dot(up).abs()) / c.dot(forward))
+    });
+    pinhole(eye, centre - eye, half_width, count, rng)
+}
+
+/// A camera's unit axes looking along `look`: forward, right, up (`+z`
+/// up).
+fn frame(look: DVec3) -> (DVec3, DVec3, DVec3) {
+    let forward = look.normalize();
+    let right = forward.cross(DVec3::Z).normalize();
+    (forward, right, right.cross(forward))
 }
 
 /// `count` camera rays from inside [`room`], at `(0, -9, 5)`, looking along
@@ -302,9 +316,7 @@ fn pinhole(
     count: usize,
     rng: &mut SplitMix64,
 ) -> Vec<(DVec3, DVec3)> {
-    let forward = look.normalize();
-    let right = forward.cross(DVec3::Z).normalize();
-    let up = right.cross(forward);
+    let (forward, right, up) = frame(look);
     // The smallest square image holding `count` pixels.
     let mut side = 1;
     while side * side < count {
