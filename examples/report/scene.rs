@@ -735,7 +735,7 @@ pub fn run_spawn(cfg: &Config) -> Vec<Row> {
         ("diffuse", 1.0, 0.0),
         ("reflect", 1.0, 0.0),
         ("grazing", 1.0, 0.0),
-        ("far", 1.0, 1e7),
+        ("far", 1.0, 1e8),
         ("tiny", 1e-30, 0.0),
         ("huge", 1e30, 0.0),
     ];
