@@ -11,8 +11,10 @@
 //!   `vertices:N` (rays aimed at mesh vertices, where triangles meet).
 //!   Methods: `exactray` (the default watertight test, default builder),
 //!   `exactray-ploc` / `exactray-sah` (the other builder), `exactray-exact`,
-//!   `obvhs`, `obvhs-bvh2`, `parry3d`, `exactray-rayon` (the default
-//!   query's `par_closest_hits` on rayon's pool, both cores), `brute-force` (the exact test on
+//!   `obvhs`, `obvhs-bvh2`, `parry3d`, `exactray-batch` and
+//!   `exactray-rayon` (the default query's `closest_hits` on one core and
+//!   `par_closest_hits` on rayon's pool, both cores, each writing whole
+//!   hits), `brute-force` (the exact test on
 //!   every triangle; a few rays, smallest sphere only). `errors`: a hit or
 //!   miss that differs from the exact variant's, or a hit on a triangle
 //!   that does not contain the exact first hit point (decided with
@@ -247,26 +249,50 @@ fn closest_methods(s: &Arc<Setup>) -> Vec<Closest> {
             p.parry.as_ref().and_then(|p| p.closest(o, dir, max))
         }));
     }
-    m.push(Box::new(Rayon(s.clone())));
+    for parallel in [false, true] {
+        m.push(Box::new(Batch {
+            setup: s.clone(),
+            parallel,
+        }));
+    }
     m
 }
 
-/// `par_closest_hits` over the whole timed set on rayon's pool (every
-/// case of a closest-hit input has the range `[0, inf)`): one call per
-/// pass, its time divided by the number of rays.
-struct Rayon(Arc<Setup>);
+/// `closest_hits` (one core) or `par_closest_hits` (rayon's pool) over the
+/// whole timed set (every case of a closest-hit input has the range `[0,
+/// inf)`): one call per pass, its time divided by the number of rays. Both
+/// write each ray's whole `MeshHit` (point, normal, shading normal), which
+/// the per-ray methods, keeping only `(triangle, t)`, may leave uncomputed;
+/// so the speed-up on two cores is `exactray-batch` over `exactray-rayon`.
+struct Batch {
+    setup: Arc<Setup>,
+    parallel: bool,
+}
 
-impl Measure<Case, Option<(u32, f64)>> for Rayon {
+impl Batch {
+    fn run(&self, rays: &[Ray], out: &mut [Option<MeshHit>]) {
+        let mesh = &self.setup.ours;
+        let done = if self.parallel {
+            mesh.par_closest_hits(rays, Interval::FORWARD, out)
+        } else {
+            mesh.closest_hits(rays, Interval::FORWARD, out)
+        };
+        done.expect("one answer per ray");
+    }
+}
+
+impl Measure<Case, Option<(u32, f64)>> for Batch {
     fn name(&self) -> &'static str {
-        "exactray-rayon"
+        if self.parallel {
+            "exactray-rayon"
+        } else {
+            "exactray-batch"
+        }
     }
 
     fn answer(&self, case: &Case) -> Option<(u32, f64)> {
         let mut out = [None];
-        self.0
-            .ours
-            .par_closest_hits(&[case.ray], case.range, &mut out)
-            .expect("one answer per ray");
+        self.run(&[case.ray], &mut out);
         out[0].map(|h| (h.triangle, h.hit.t))
     }
 
@@ -275,10 +301,7 @@ impl Measure<Case, Option<(u32, f64)>> for Rayon {
         let mut out = vec![None; rays.len()];
         let start = Instant::now();
         for _ in 0..iters {
-            self.0
-                .ours
-                .par_closest_hits(std::hint::black_box(&rays), Interval::FORWARD, &mut out)
-                .expect("one answer per ray");
+            self.run(std::hint::black_box(&rays), &mut out);
             std::hint::black_box(&mut out);
         }
         start.elapsed()

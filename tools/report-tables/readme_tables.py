@@ -279,6 +279,7 @@ def scene_closest(rep, cells):
     return [("closest_hit", inputs)], [inputs] + [
         cell(g(m), wrong_pct1) for m in SCENE_CLOSEST_METHODS
     ] + [
+        "-" if g("exactray-batch") is None else ns(t("exactray-batch")),
         "-" if g("exactray-rayon") is None else ns(t("exactray-rayon")),
         ratio(t("exactray"), t("obvhs")),
         ratio(t("exactray"), t("parry3d")),
@@ -350,7 +351,8 @@ TABLES = [
     (
         "Scenes: closest hit",
         "| inputs | exactray ns (wrong) | exactray-exact ns (wrong) | exactray-ploc ns (wrong) | obvhs ns (wrong) "
-        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | exactray-rayon ns | exactray / obvhs | exactray / parry3d |",
+        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | exactray-batch ns | exactray-rayon ns | exactray / obvhs "
+        "| exactray / parry3d |",
         scene_closest,
         ["closest_hit"],
     ),
