@@ -14,7 +14,8 @@
 //!   triangles, validated at construction.
 //! - [`query::ray`]: rays and where they meet each shape ([`RayCast`]),
 //!   with exact hit or miss where the shape allows it; [`raster`]: 2D
-//!   triangle rasterization with exact pixel coverage.
+//!   triangle rasterization with exact pixel coverage, and clip-space
+//!   triangles clipped before the divide into Z-buffer fragments.
 //! - [`bvh`] (with `alloc`): an exact nearest-point index over a hierarchy
 //!   of bounding spheres.
 //! - [`scene`] (with `alloc`): triangle meshes over a conservative BVH,

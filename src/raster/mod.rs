@@ -1,7 +1,41 @@
-//! Rasterization of one 2D triangle by edge functions, with pixel-centre
-//! coverage decided exactly and a top-left fill rule.
+//! Rasterization: one 2D triangle by edge functions, with pixel-centre
+//! coverage decided exactly and a top-left fill rule
+//! ([`rasterize_triangle`]); and triangles in homogeneous clip space,
+//! clipped before the divide ([`clip_triangle`]) and rasterized into
+//! Z-buffer fragments with depth and perspective-correct weights
+//! ([`rasterize_clipped`], [`rasterize_clip_space`]).
 //!
-//! # Conventions
+//! # Clip space
+//! A clip-space point `(x, y, z, w)` is what a projection matrix makes of
+//! a view-space point, in the convention of glam's depth-0-to-1
+//! perspective matrices: the former `DMat4::perspective_rh` and
+//! `DMat4::perspective_lh` (since glam 0.34,
+//! `glam::dcamera::rh::proj::directx::perspective` and
+//! `glam::dcamera::lh::proj::directx::perspective`; right- and left-handed
+//! view spaces, the same clip space). A point is visible when `0 <= z <=
+//! w` (near plane `z = 0`, far plane `z = w`) and `-w <= x <= w`, `-w <= y
+//! <= w`. For those matrices `w` is the distance in front of the eye along
+//! the view axis and `z = 0` exactly where `w = near > 0`, so the near
+//! plane alone keeps the part of a triangle the divide by `w` can
+//! project; a vertex behind the eye has `w < 0`. Projecting such a
+//! triangle without clipping wraps it through infinity, and the
+//! rasterized 2D triangle covers pixels the true triangle does not.
+//!
+//! [`to_screen`] maps clip space to the pixels of [`rasterize_triangle`]:
+//! `x_s = (x / w * 0.5 + 0.5) * width`, `y_s = (0.5 - y / w * 0.5) *
+//! height` (`y` flipped: screen `y` grows downwards), depth `z / w` (0 near,
+//! 1 far).
+//!
+//! # Clipping
+//! Sutherland–Hodgman against the near plane or all six. A vertex is
+//! inside a plane when the plane's function (`z`, `w - z`, `w + x`, `w -
+//! x`, `w + y`, `w - y`) as computed is `>= 0`, so a vertex on a plane is
+//! inside; the sign of that rounded value is the exact sign. An edge is cut
+//! from its endpoints in a canonical order (their positions' bit
+//! patterns), so triangles sharing an edge get bit-identical cut points on
+//! it through every plane, and their fragments cover each pixel once.
+//!
+//! # 2D coverage
 //! - Pixel `(x, y)` is the unit square `[x, x + 1) x [y, y + 1)`; it is
 //!   covered when its centre `(x + 0.5, y + 0.5)` is. `x` grows to the
 //!   right and `y` downwards (screen coordinates), and only pixels with
@@ -34,6 +68,12 @@
 //! the bound requires. A triangle costs a few operations per row, not per
 //! pixel, and no allocation: covered pixels are reported one span per row
 //! to a callback, which fills them as it likes.
+
+mod clip;
+mod fragments;
+
+pub use clip::{ClipPlanes, ClipVertex, ClippedPolygon, clip_triangle};
+pub use fragments::{Fragment, rasterize_clip_space, rasterize_clipped, to_screen};
 
 use crate::arith::roundoff::{U, gamma};
 use crate::error::InputError;
