@@ -33,6 +33,7 @@ mod ray_cylinder;
 mod ray_quadric;
 mod ray_sphere;
 mod ray_triangle;
+mod render;
 mod scene;
 
 use framework::{Config, Row};
@@ -59,6 +60,7 @@ const FAMILIES: &[(&str, Family)] = &[
     ("closest_hit", scene::run_closest),
     ("any_hit", scene::run_any_hit),
     ("spawn", scene::run_spawn),
+    ("render", render::run),
 ];
 
 fn main() -> std::io::Result<()> {

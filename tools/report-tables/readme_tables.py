@@ -268,6 +268,25 @@ def raster(rep, cells):
     ]
 
 
+def render_frame(rep, cells):
+    inputs = cells[0]
+    size, n = inputs.split(":")
+    w, h = (int(x) for x in size.split("x"))
+    t = lambda m: rep.ns("render", m, inputs)
+    r, rays = t("exactray-raster"), t("exactray-rays")
+    row = rep.row("render", "exactray-raster", inputs)
+    ms = lambda v: "-" if v is None else sig(v / 1e6, 3)
+    return [("render", inputs)], [
+        inputs,
+        ms(r),
+        ms(rays),
+        ratio(rays, r),
+        "-" if r is None else sig(r / int(n), 3),
+        "-" if rays is None else sig(rays / (w * h), 3),
+        "-" if row is None else f"{row['errors']:,}",
+    ]
+
+
 SCENE_CLOSEST_METHODS = ["exactray", "exactray-exact", "exactray-ploc", "obvhs", "obvhs-bvh2", "parry3d"]
 SCENE_ANY_METHODS = ["exactray", "exactray-closest", "exactray-exact", "obvhs", "obvhs-bvh2", "parry3d"]
 
@@ -376,6 +395,13 @@ TABLES = [
         "| rasterize ns per pixel | rays ns per pixel |",
         raster,
         ["raster_triangle"],
+    ),
+    (
+        "Q2 at frame scale",
+        "| inputs | Z-buffer ms | rays ms | rays / Z-buffer | Z-buffer ns per triangle | rays ns per pixel "
+        "| pixels differing |",
+        render_frame,
+        ["render"],
     ),
 ]
 

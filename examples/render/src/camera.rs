@@ -115,7 +115,10 @@ impl Camera {
         let c = self.clip_from_world() * p.extend(1.0);
         (c.w > 0.0).then(|| {
             let (x, y) = (c.x / c.w, c.y / c.w);
-            ((x + 1.0) * 0.5 * self.width as f64, (1.0 - y) * 0.5 * self.height as f64)
+            (
+                (x + 1.0) * 0.5 * self.width as f64,
+                (1.0 - y) * 0.5 * self.height as f64,
+            )
         })
     }
 

@@ -15,7 +15,11 @@ pub struct Image {
 impl Image {
     /// A black image.
     pub fn new(width: u32, height: u32) -> Image {
-        Image::from_pixels(width, height, vec![DVec3::ZERO; width as usize * height as usize])
+        Image::from_pixels(
+            width,
+            height,
+            vec![DVec3::ZERO; width as usize * height as usize],
+        )
     }
 
     /// An image from its pixels, row by row; a wrong count is padded with
@@ -65,7 +69,10 @@ impl Image {
 
     /// `self` and `other` side by side, a `gap`-pixel white bar between.
     pub fn beside(&self, other: &Image, gap: u32) -> Image {
-        let (w, h) = (self.width + gap + other.width, self.height.max(other.height));
+        let (w, h) = (
+            self.width + gap + other.width,
+            self.height.max(other.height),
+        );
         let pixels = (0..h)
             .flat_map(|j| (0..w).map(move |i| (i, j)))
             .map(|(i, j)| match i {

@@ -74,7 +74,14 @@ fn pixel_stream(seed: u64, index: u64) -> SplitMix64 {
 impl PathTracer {
     /// The light sample's contribution at the matte hit `hit` (albedo not
     /// applied), `None` when the room has no area light.
-    fn light_sample(&self, room: &Room, ray: &Ray, hit: &SceneHit, rng: &mut SplitMix64, rays: &mut u64) -> DVec3 {
+    fn light_sample(
+        &self,
+        room: &Room,
+        ray: &Ray,
+        hit: &SceneHit,
+        rng: &mut SplitMix64,
+        rays: &mut u64,
+    ) -> DVec3 {
         let Some(light) = room.area_light.filter(|_| self.next_event) else {
             return DVec3::ZERO;
         };
@@ -171,7 +178,15 @@ impl PathTracer {
 
     /// The mean of a pixel's paths and the variance of that mean (of the
     /// paths' mean over the three channels).
-    fn pixel(&self, room: &Room, camera: &crate::camera::Camera, i: u32, j: u32, rng: &mut SplitMix64, rays: &mut u64) -> (DVec3, f64) {
+    fn pixel(
+        &self,
+        room: &Room,
+        camera: &crate::camera::Camera,
+        i: u32,
+        j: u32,
+        rng: &mut SplitMix64,
+        rays: &mut u64,
+    ) -> (DVec3, f64) {
         let n = self.samples.max(1);
         let (mut sum, mut squares) = (DVec3::ZERO, 0.0);
         for _ in 0..n {

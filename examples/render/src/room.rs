@@ -166,14 +166,23 @@ fn quad(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> TriangleMesh {
 /// A UV sphere of `rings` x `segments` quads (poles as fans), with its
 /// exact unit normals at the vertices: coarse, so that interpolated normals
 /// differ visibly from the facets'.
-pub fn uv_sphere(centre: DVec3, radius: f64, rings: u32, segments: u32) -> (Vec<DVec3>, Vec<[u32; 3]>, Vec<DVec3>) {
+pub fn uv_sphere(
+    centre: DVec3,
+    radius: f64,
+    rings: u32,
+    segments: u32,
+) -> (Vec<DVec3>, Vec<[u32; 3]>, Vec<DVec3>) {
     let (rings, segments) = (rings.max(2), segments.max(3));
     let mut normals = vec![DVec3::Y];
     for i in 1..rings {
         let theta = PI * i as f64 / rings as f64;
         for j in 0..segments {
             let phi = 2.0 * PI * j as f64 / segments as f64;
-            normals.push(DVec3::new(theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()));
+            normals.push(DVec3::new(
+                theta.sin() * phi.cos(),
+                theta.cos(),
+                -theta.sin() * phi.sin(),
+            ));
         }
     }
     normals.push(-DVec3::Y);
@@ -194,7 +203,12 @@ pub fn uv_sphere(centre: DVec3, radius: f64, rings: u32, segments: u32) -> (Vec<
 }
 
 /// A capped cylinder's tessellation, for the Z-buffer's picture.
-fn cylinder_mesh(base: DVec3, height: f64, radius: f64, segments: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+fn cylinder_mesh(
+    base: DVec3,
+    height: f64,
+    radius: f64,
+    segments: u32,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let mut vertices = vec![base, base + DVec3::Y * height];
     for j in 0..segments {
         let phi = 2.0 * PI * j as f64 / segments as f64;
@@ -223,24 +237,66 @@ pub fn cornell_room(width: u32, height: u32) -> Room {
     let mut materials = Vec::new();
     let mut raster = Vec::new();
     let mut add_mesh = |builder: &mut SceneBuilder, mesh: TriangleMesh, material: Material| {
-        let id = builder.add(mesh.clone()).expect("fewer than 2^31 primitives");
+        let id = builder
+            .add(mesh.clone())
+            .expect("fewer than 2^31 primitives");
         raster.push(RasterMesh::of(id, &mesh));
         materials.push(material);
         id
     };
     let walls = [
-        (quad(v(-1., 0., 1.), v(1., 0., 1.), v(1., 0., -1.), v(-1., 0., -1.)), WHITE),
-        (quad(v(-1., 2., -1.), v(1., 2., -1.), v(1., 2., 1.), v(-1., 2., 1.)), WHITE),
-        (quad(v(-1., 0., -1.), v(1., 0., -1.), v(1., 2., -1.), v(-1., 2., -1.)), WHITE),
-        (quad(v(-1., 0., 1.), v(-1., 0., -1.), v(-1., 2., -1.), v(-1., 2., 1.)), RED),
-        (quad(v(1., 0., -1.), v(1., 0., 1.), v(1., 2., 1.), v(1., 2., -1.)), GREEN),
+        (
+            quad(
+                v(-1., 0., 1.),
+                v(1., 0., 1.),
+                v(1., 0., -1.),
+                v(-1., 0., -1.),
+            ),
+            WHITE,
+        ),
+        (
+            quad(
+                v(-1., 2., -1.),
+                v(1., 2., -1.),
+                v(1., 2., 1.),
+                v(-1., 2., 1.),
+            ),
+            WHITE,
+        ),
+        (
+            quad(
+                v(-1., 0., -1.),
+                v(1., 0., -1.),
+                v(1., 2., -1.),
+                v(-1., 2., -1.),
+            ),
+            WHITE,
+        ),
+        (
+            quad(
+                v(-1., 0., 1.),
+                v(-1., 0., -1.),
+                v(-1., 2., -1.),
+                v(-1., 2., 1.),
+            ),
+            RED,
+        ),
+        (
+            quad(v(1., 0., -1.), v(1., 0., 1.), v(1., 2., 1.), v(1., 2., -1.)),
+            GREEN,
+        ),
     ];
     for (mesh, colour) in walls {
         occluders.add(mesh.clone()).expect("few primitives");
         add_mesh(&mut builder, mesh, Material::matte(colour));
     }
     let (ui, uj) = ((1.0 - 0.06) * 2.0, 0.25);
-    let light_quad = quad(v(-uj, ui, -uj), v(-uj, ui, uj), v(uj, ui, uj), v(uj, ui, -uj));
+    let light_quad = quad(
+        v(-uj, ui, -uj),
+        v(-uj, ui, uj),
+        v(uj, ui, uj),
+        v(uj, ui, -uj),
+    );
     let light_material = Material {
         surface: Surface::Matte(DVec3::splat(0.78)),
         emission: DVec3::splat(17.0),
@@ -279,8 +335,15 @@ pub fn cornell_room(width: u32, height: u32) -> Room {
         normals: None,
     });
 
-    let camera = Camera::new(v(0.0, 1.0, 3.9), v(0.0, 1.0, 0.0), DVec3::Y, 38.0, width, height)
-        .expect("valid camera");
+    let camera = Camera::new(
+        v(0.0, 1.0, 3.9),
+        v(0.0, 1.0, 0.0),
+        DVec3::Y,
+        38.0,
+        width,
+        height,
+    )
+    .expect("valid camera");
     Room {
         scene: builder.build(),
         occluders: occluders.build(),
@@ -317,12 +380,42 @@ pub fn furnace(albedo: f64, width: u32, height: u32) -> Room {
         emission: DVec3::ONE,
     };
     let faces = [
-        quad(v(-1., -1., 1.), v(1., -1., 1.), v(1., -1., -1.), v(-1., -1., -1.)),
-        quad(v(-1., 1., -1.), v(1., 1., -1.), v(1., 1., 1.), v(-1., 1., 1.)),
-        quad(v(-1., -1., -1.), v(1., -1., -1.), v(1., 1., -1.), v(-1., 1., -1.)),
-        quad(v(1., -1., 1.), v(-1., -1., 1.), v(-1., 1., 1.), v(1., 1., 1.)),
-        quad(v(-1., -1., 1.), v(-1., -1., -1.), v(-1., 1., -1.), v(-1., 1., 1.)),
-        quad(v(1., -1., -1.), v(1., -1., 1.), v(1., 1., 1.), v(1., 1., -1.)),
+        quad(
+            v(-1., -1., 1.),
+            v(1., -1., 1.),
+            v(1., -1., -1.),
+            v(-1., -1., -1.),
+        ),
+        quad(
+            v(-1., 1., -1.),
+            v(1., 1., -1.),
+            v(1., 1., 1.),
+            v(-1., 1., 1.),
+        ),
+        quad(
+            v(-1., -1., -1.),
+            v(1., -1., -1.),
+            v(1., 1., -1.),
+            v(-1., 1., -1.),
+        ),
+        quad(
+            v(1., -1., 1.),
+            v(-1., -1., 1.),
+            v(-1., 1., 1.),
+            v(1., 1., 1.),
+        ),
+        quad(
+            v(-1., -1., 1.),
+            v(-1., -1., -1.),
+            v(-1., 1., -1.),
+            v(-1., 1., 1.),
+        ),
+        quad(
+            v(1., -1., -1.),
+            v(1., -1., 1.),
+            v(1., 1., 1.),
+            v(1., 1., -1.),
+        ),
     ];
     let mut builder = SceneBuilder::new();
     let mut raster = Vec::new();
@@ -331,8 +424,15 @@ pub fn furnace(albedo: f64, width: u32, height: u32) -> Room {
         raster.push(RasterMesh::of(id, &mesh));
     }
     let scene = builder.build();
-    let camera = Camera::new(v(0.1, 0.2, 0.5), v(0.0, 0.0, -1.0), DVec3::Y, 60.0, width, height)
-        .expect("valid camera");
+    let camera = Camera::new(
+        v(0.1, 0.2, 0.5),
+        v(0.0, 0.0, -1.0),
+        DVec3::Y,
+        60.0,
+        width,
+        height,
+    )
+    .expect("valid camera");
     Room {
         occluders: scene.clone(),
         scene,

@@ -67,7 +67,8 @@ pub fn visibility(meshes: &[RasterMesh], camera: &Camera) -> Visibility {
             };
             // A non-finite clip-space vertex (from a non-finite matrix) is
             // skipped: the error leaves this triangle out, nothing else.
-            fragments += rasterize_clip_space(a, b, c, ClipPlanes::Frustum, w, h, keep).unwrap_or(0);
+            fragments +=
+                rasterize_clip_space(a, b, c, ClipPlanes::Frustum, w, h, keep).unwrap_or(0);
         }
     }
     Visibility {
@@ -117,7 +118,10 @@ pub fn render(room: &Room, width: u32, height: u32) -> (Image, Visibility) {
             let light = room.point_light;
             let to = light.position - p;
             let cos = n.dot(to.normalize_or_zero()).max(0.0);
-            albedo * (DVec3::splat(0.03) + material.emission + light.intensity * cos / to.length_squared())
+            albedo
+                * (DVec3::splat(0.03)
+                    + material.emission
+                    + light.intensity * cos / to.length_squared())
         })
         .collect();
     (Image::from_pixels(width, height, pixels), vis)

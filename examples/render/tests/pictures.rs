@@ -2,11 +2,11 @@
 //! the furnace, reproducibility. The visibility comparison of the two
 //! renderers is in `visibility.rs`.
 
+use exactray::Sign;
 use exactray::interval::Interval;
 use exactray::predicates::orient3d;
 use exactray::query::ray::{Exact, Ray, Watertight};
 use exactray::scene::{SceneBuilder, TriangleMesh, spawn_ray_to};
-use exactray::Sign;
 use exactray_render::path::PathTracer;
 use exactray_render::room::{Material, Surface, cornell_room, furnace};
 use exactray_render::whitted::RayTracer;
@@ -17,7 +17,12 @@ use glam::DVec3;
 /// `(1, 0, 0)` lies exactly on the shadow's edge (its segment to the light
 /// passes through the blocker's edge point `(0.5, 1, 0)`).
 fn blocker() -> TriangleMesh {
-    let v = [[-0.5, 1.0, -0.5], [0.5, 1.0, -0.5], [0.5, 1.0, 0.5], [-0.5, 1.0, 0.5]];
+    let v = [
+        [-0.5, 1.0, -0.5],
+        [0.5, 1.0, -0.5],
+        [0.5, 1.0, 0.5],
+        [-0.5, 1.0, 0.5],
+    ];
     TriangleMesh::new(&v, &[[0, 1, 2], [0, 2, 3]]).unwrap()
 }
 
@@ -29,7 +34,12 @@ const LIGHT: [f64; 3] = [0.0, 2.0, 0.0];
 #[test]
 fn a_point_in_the_shadow_is_dark() {
     let floor = TriangleMesh::new(
-        &[[-9.0, 0.0, -9.0], [9.0, 0.0, -9.0], [9.0, 0.0, 9.0], [-9.0, 0.0, 9.0]],
+        &[
+            [-9.0, 0.0, -9.0],
+            [9.0, 0.0, -9.0],
+            [9.0, 0.0, 9.0],
+            [-9.0, 0.0, 9.0],
+        ],
         &[[0, 2, 1], [0, 3, 2]],
     )
     .unwrap();
@@ -39,7 +49,11 @@ fn a_point_in_the_shadow_is_dark() {
     let scene = b.build();
     // Seen from the side, below the blocker's height.
     let eye = DVec3::new(3.0, 0.5, 0.0);
-    for (target, dark) in [(DVec3::ZERO, true), (DVec3::new(0.3, 0.0, 0.2), true), (DVec3::new(2.0, 0.0, 0.0), false)] {
+    for (target, dark) in [
+        (DVec3::ZERO, true),
+        (DVec3::new(0.3, 0.0, 0.2), true),
+        (DVec3::new(2.0, 0.0, 0.0), false),
+    ] {
         let ray = Ray::new(eye, target - eye).unwrap();
         let hit = scene.closest_hit(&ray, Interval::FORWARD).unwrap();
         assert_eq!(hit.primitive.0, 0, "the floor is hit first");
@@ -60,10 +74,17 @@ fn a_point_on_the_shadows_edge_follows_the_rule() {
     let b = blocker();
     let edge_point = [1.0, 0.0, 0.0];
     assert!(b.occluded_between_with::<Exact>(edge_point, LIGHT).unwrap());
-    assert!(b.occluded_between_with::<Watertight>(edge_point, LIGHT).unwrap());
+    assert!(
+        b.occluded_between_with::<Watertight>(edge_point, LIGHT)
+            .unwrap()
+    );
     let outside = [1f64.next_up(), 0.0, 0.0];
     assert!(!b.occluded_between_with::<Exact>(outside, LIGHT).unwrap());
-    let floor = TriangleMesh::new(&[[-9.0, 0.0, -9.0], [9.0, 0.0, 9.0], [9.0, 0.0, -9.0]], &[[0, 1, 2]]).unwrap();
+    let floor = TriangleMesh::new(
+        &[[-9.0, 0.0, -9.0], [9.0, 0.0, 9.0], [9.0, 0.0, -9.0]],
+        &[[0, 1, 2]],
+    )
+    .unwrap();
     let ray = Ray::new([1.0, 3.0, 0.0], [0.0, -1.0, 0.0]).unwrap();
     let hit = floor.closest_hit(&ray, Interval::FORWARD).unwrap().hit;
     assert_eq!(hit.point, DVec3::new(1.0, 0.0, 0.0));
@@ -85,13 +106,22 @@ fn no_wall_shadows_itself() {
     for j in 0..camera.height() {
         for i in 0..camera.width() {
             let ray = camera.pixel_ray(i, j);
-            let Some(hit) = room.scene.closest_hit(&ray, Interval::FORWARD) else { continue };
+            let Some(hit) = room.scene.closest_hit(&ray, Interval::FORWARD) else {
+                continue;
+            };
             let Some(p) = hit.triangle else { continue };
-            let exactray::scene::Primitive::Mesh(mesh) = &room.scene.primitives()[hit.primitive.index()] else { continue };
+            let exactray::scene::Primitive::Mesh(mesh) =
+                &room.scene.primitives()[hit.primitive.index()]
+            else {
+                continue;
+            };
             let wall = mesh.triangle(p.triangle as usize).unwrap();
             let [a, b, c] = wall.vertices();
             let facing = orient3d(a, b, c, camera.eye());
-            if facing == Sign::Zero || orient3d(a, b, c, light) != facing || mesh.triangles().len() != 2 {
+            if facing == Sign::Zero
+                || orient3d(a, b, c, light) != facing
+                || mesh.triangles().len() != 2
+            {
                 continue;
             }
             let (shadow, range) = spawn_ray_to(&hit.hit, light).unwrap();
@@ -114,15 +144,27 @@ fn no_wall_shadows_itself() {
 fn furnace_converges_to_one_over_one_minus_albedo() {
     for albedo in [0.5, 0.8] {
         let room = furnace(albedo, 24, 16);
-        let tracer = PathTracer { samples: 64, ..PathTracer::default() };
+        let tracer = PathTracer {
+            samples: 64,
+            ..PathTracer::default()
+        };
         let r = tracer.render(&room, 24, 16);
         let n = r.variance_of_mean.len() as f64;
         let mean = r.image.mean().element_sum() / 3.0;
         let standard_error = r.variance_of_mean.iter().sum::<f64>().sqrt() / n;
         let expected = 1.0 / (1.0 - albedo);
         assert!(standard_error > 0.0);
-        assert!((mean - expected).abs() < 4.0 * standard_error, "albedo {albedo}: {mean} vs {expected} (se {standard_error})");
-        assert!(room.materials.iter().all(|m| matches!(m, Material { surface: Surface::Matte(_), .. })));
+        assert!(
+            (mean - expected).abs() < 4.0 * standard_error,
+            "albedo {albedo}: {mean} vs {expected} (se {standard_error})"
+        );
+        assert!(room.materials.iter().all(|m| matches!(
+            m,
+            Material {
+                surface: Surface::Matte(_),
+                ..
+            }
+        )));
     }
 }
 
@@ -131,18 +173,39 @@ fn furnace_converges_to_one_over_one_minus_albedo() {
 #[test]
 fn renders_are_reproducible() {
     let room = cornell_room(48, 36);
-    let tracer = PathTracer { samples: 4, ..PathTracer::default() };
+    let tracer = PathTracer {
+        samples: 4,
+        ..PathTracer::default()
+    };
     let png = |threads: usize, seed: u64| {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
-        pool.install(|| PathTracer { seed, ..tracer }.render(&room, 48, 36).image.png_bytes().unwrap())
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            PathTracer { seed, ..tracer }
+                .render(&room, 48, 36)
+                .image
+                .png_bytes()
+                .unwrap()
+        })
     };
     let one = png(1, 7);
     assert_eq!(one, png(2, 7));
     assert_eq!(one, png(3, 7));
     assert_ne!(one, png(2, 8));
     let traced = |threads: usize| {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
-        pool.install(|| RayTracer::default().render(&room, 48, 36).0.png_bytes().unwrap())
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            RayTracer::default()
+                .render(&room, 48, 36)
+                .0
+                .png_bytes()
+                .unwrap()
+        })
     };
     assert_eq!(traced(1), traced(2));
 }
