@@ -30,6 +30,31 @@ fn main() -> std::io::Result<()> {
     );
     raster.write_png(docs.join("render-raster.png"))?;
 
+    // Q6: a camera inside the room, whose walls reach behind it.
+    let inside = exactray_render::camera::Camera::new(
+        glam::DVec3::new(0.0, 1.0, 0.6),
+        glam::DVec3::new(0.0, 0.7, -1.0),
+        glam::DVec3::Y,
+        75.0,
+        w,
+        h,
+    )
+    .expect("valid camera");
+    let (unclipped, bad) = zbuffer::render_from(&room, &inside, zbuffer::Clipping::None);
+    let (clipped, good) = zbuffer::render_from(&room, &inside, zbuffer::Clipping::Frustum);
+    let wrong = bad
+        .pixels
+        .iter()
+        .zip(&good.pixels)
+        .filter(|(a, b)| a.map(|v| (v.mesh, v.triangle)) != b.map(|v| (v.mesh, v.triangle)))
+        .count();
+    println!(
+        "| Q6: Z-buffer from inside the room, divided without clipping: {wrong} pixels show another triangle than with clipping | {w}x{h} | – | – | – |"
+    );
+    unclipped
+        .beside(&clipped, 6)
+        .write_png(docs.join("q6-clipping.png"))?;
+
     let tracer = RayTracer::default();
     let start = Instant::now();
     let (traced, counts) = tracer.render(&room, w, h);

@@ -8,9 +8,22 @@
 use crate::camera::Camera;
 use crate::image::Image;
 use crate::room::{RasterMesh, Room, Surface};
-use exactray::raster::{ClipPlanes, Fragment, rasterize_clip_space};
+use exactray::raster::{ClipPlanes, Fragment, rasterize_clip_space, rasterize_triangle, to_screen};
 use exactray::scene::PrimitiveId;
-use glam::DVec3;
+use glam::{DVec3, DVec4};
+
+/// Whether triangles are clipped before the perspective divide.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Clipping {
+    /// Against the six frustum planes, in clip space (the right way).
+    Frustum,
+    /// Not at all: every vertex divided by its `w`, even a negative one
+    /// behind the eye, the 2D triangle rasterized, depth interpolated on
+    /// screen and fragments outside depth `[0, 1]` dropped. The exam's Q6
+    /// failure: a triangle reaching behind the eye is drawn inverted, at
+    /// depths that look visible.
+    None,
+}
 
 /// The nearest surface found at a pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -43,6 +56,11 @@ pub struct Visibility {
 /// depths the first drawn stays (the tie rule: drawing order, which is
 /// `meshes` order, then triangle order).
 pub fn visibility(meshes: &[RasterMesh], camera: &Camera) -> Visibility {
+    visibility_with(meshes, camera, Clipping::Frustum)
+}
+
+/// [`visibility`] with the given [`Clipping`].
+pub fn visibility_with(meshes: &[RasterMesh], camera: &Camera, clipping: Clipping) -> Visibility {
     let (w, h) = (camera.width(), camera.height());
     let m = camera.clip_from_world();
     let mut pixels: Vec<Option<Visible>> = vec![None; w as usize * h as usize];
@@ -67,8 +85,12 @@ pub fn visibility(meshes: &[RasterMesh], camera: &Camera) -> Visibility {
             };
             // A non-finite clip-space vertex (from a non-finite matrix) is
             // skipped: the error leaves this triangle out, nothing else.
-            fragments +=
-                rasterize_clip_space(a, b, c, ClipPlanes::Frustum, w, h, keep).unwrap_or(0);
+            fragments += match clipping {
+                Clipping::Frustum => {
+                    rasterize_clip_space(a, b, c, ClipPlanes::Frustum, w, h, keep).unwrap_or(0)
+                }
+                Clipping::None => divided_without_clipping([a, b, c], w, h, keep),
+            };
         }
     }
     Visibility {
@@ -77,6 +99,50 @@ pub fn visibility(meshes: &[RasterMesh], camera: &Camera) -> Visibility {
         pixels,
         fragments,
     }
+}
+
+/// The Q6 failure: rasterizes the triangle of clip-space vertices `v` by
+/// dividing each by its `w` (a vertex behind the eye has `w < 0`, and lands
+/// mirrored through the image centre), interpolating depth linearly on
+/// screen and weights without perspective correction, and keeping the
+/// fragments with depth in `[0, 1]`, as a depth range test would.
+fn divided_without_clipping(v: [DVec4; 3], w: u32, h: u32, mut keep: impl FnMut(Fragment)) -> u64 {
+    if v.iter().any(|p| p.w == 0.0) {
+        return 0;
+    }
+    let s = v.map(|p| to_screen(p, w, h));
+    let mut kept = 0;
+    let _ = rasterize_triangle(
+        s[0].truncate(),
+        s[1].truncate(),
+        s[2].truncate(),
+        w,
+        h,
+        |y, x0, x1| {
+            for x in x0..x1 {
+                let c = glam::DVec2::new(x as f64 + 0.5, y as f64 + 0.5);
+                let a = s.map(|p| p.truncate() - c);
+                let e = [
+                    a[1].perp_dot(a[2]),
+                    a[2].perp_dot(a[0]),
+                    a[0].perp_dot(a[1]),
+                ];
+                let sum = e[0] + e[1] + e[2];
+                let l = e.map(|e| e / sum);
+                let depth = l[0] * s[0].z + l[1] * s[1].z + l[2] * s[2].z;
+                if (0.0..=1.0).contains(&depth) {
+                    kept += 1;
+                    keep(Fragment {
+                        x,
+                        y,
+                        depth,
+                        weights: DVec3::from(l),
+                    });
+                }
+            }
+        },
+    );
+    kept
 }
 
 /// The world point and unit normal of a visible surface, interpolated
@@ -97,8 +163,17 @@ fn surface_point(mesh: &RasterMesh, v: &Visible) -> (DVec3, DVec3) {
 /// the point light with no shadows, the same ambient term as the ray
 /// tracer's, mirrors grey.
 pub fn render(room: &Room, width: u32, height: u32) -> (Image, Visibility) {
-    let camera = room.camera.with_size(width, height);
-    let vis = visibility(&room.raster, &camera);
+    render_from(
+        room,
+        &room.camera.with_size(width, height),
+        Clipping::Frustum,
+    )
+}
+
+/// [`render`] through `camera`, with the given [`Clipping`].
+pub fn render_from(room: &Room, camera: &Camera, clipping: Clipping) -> (Image, Visibility) {
+    let (width, height) = (camera.width(), camera.height());
+    let vis = visibility_with(&room.raster, camera, clipping);
     let eye = camera.eye();
     let pixels = vis
         .pixels
