@@ -1,6 +1,7 @@
 //! Writes the README's pictures to `docs/` and prints the time each took:
 //! `cargo run --release -p exactray-render` (from the repository root).
-//! `--quick` renders at a quarter of the size, with fewer paths.
+//! `--quick` renders at a quarter of the size, with fewer paths; `--out
+//! DIR` writes there instead of `docs/`.
 
 use exactray_render::path::PathTracer;
 use exactray_render::plot::log_log_svg;
@@ -13,7 +14,15 @@ use std::time::Instant;
 fn main() -> std::io::Result<()> {
     let quick = std::env::args().any(|a| a == "--quick");
     let (w, h) = if quick { (128, 96) } else { (512, 384) };
-    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs");
+    let args: Vec<String> = std::env::args().collect();
+    let docs = match args
+        .iter()
+        .position(|a| a == "--out")
+        .and_then(|i| args.get(i + 1))
+    {
+        Some(dir) => std::path::PathBuf::from(dir),
+        None => std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs"),
+    };
     std::fs::create_dir_all(&docs)?;
     let room = cornell_room(w, h);
     let threads = rayon::current_num_threads();
