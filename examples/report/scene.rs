@@ -11,7 +11,9 @@
 //!   `vertices:N` (rays aimed at mesh vertices, where triangles meet).
 //!   Methods: `exactray` (the default watertight test, default builder),
 //!   `exactray-ploc` / `exactray-sah` (the other builder), `exactray-exact`,
-//!   `obvhs`, `obvhs-bvh2`, `parry3d`, `exactray-batch` and
+//!   `obvhs`, `obvhs-bvh2`, `parry3d`, `embree` (Embree 3's
+//!   `rtcIntersect1` / `rtcOccluded1` in `f32`, only with the report's
+//!   `embree` feature), `exactray-batch` and
 //!   `exactray-rayon` (the default query's `closest_hits` on one core and
 //!   `par_closest_hits` on rayon's pool, both cores, each writing whole
 //!   hits), `brute-force` (the exact test on
@@ -60,6 +62,9 @@ struct Setup {
     other: TriangleMesh,
     obvhs: Option<ObvhsScene>,
     parry: Option<ParryScene>,
+    /// Embree's scene (the report's `embree` feature).
+    #[cfg(feature = "embree")]
+    embree: exactray_peers::scene_embree::EmbreeScene,
 }
 
 /// The builder `exactray` does not use by default, and its method name.
@@ -116,6 +121,9 @@ impl Setup {
                 )),
             ),
         );
+        #[cfg(feature = "embree")]
+        let embree =
+            exactray_peers::scene_embree::EmbreeScene::new(&data.vertices, &data.triangles);
         Setup {
             name,
             data,
@@ -123,6 +131,8 @@ impl Setup {
             other,
             obvhs,
             parry,
+            #[cfg(feature = "embree")]
+            embree,
         }
     }
 
@@ -249,6 +259,14 @@ fn closest_methods(s: &Arc<Setup>) -> Vec<Closest> {
             p.parry.as_ref().and_then(|p| p.closest(o, dir, max))
         }));
     }
+    #[cfg(feature = "embree")]
+    {
+        let p = s.clone();
+        m.push(method("embree", move |q: &Case| {
+            let (o, dir, max) = q.parts();
+            p.embree.closest(o, dir, max)
+        }));
+    }
     for parallel in [false, true] {
         m.push(Box::new(Batch {
             setup: s.clone(),
@@ -341,6 +359,14 @@ fn any_hit_methods(s: &Arc<Setup>) -> Vec<AnyHit> {
         m.push(method("parry3d", move |q: &Case| {
             let (o, dir, max) = q.parts();
             p.parry.as_ref().is_some_and(|p| p.occluded(o, dir, max))
+        }));
+    }
+    #[cfg(feature = "embree")]
+    {
+        let p = s.clone();
+        m.push(method("embree", move |q: &Case| {
+            let (o, dir, max) = q.parts();
+            p.embree.occluded(o, dir, max)
         }));
     }
     m

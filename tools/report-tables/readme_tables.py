@@ -287,8 +287,8 @@ def render_frame(rep, cells):
     ]
 
 
-SCENE_CLOSEST_METHODS = ["exactray", "exactray-exact", "exactray-ploc", "obvhs", "obvhs-bvh2", "parry3d"]
-SCENE_ANY_METHODS = ["exactray", "exactray-closest", "exactray-exact", "obvhs", "obvhs-bvh2", "parry3d"]
+SCENE_CLOSEST_METHODS = ["exactray", "exactray-exact", "exactray-ploc", "obvhs", "obvhs-bvh2", "parry3d", "embree"]
+SCENE_ANY_METHODS = ["exactray", "exactray-closest", "exactray-exact", "obvhs", "obvhs-bvh2", "parry3d", "embree"]
 
 
 def scene_closest(rep, cells):
@@ -370,15 +370,15 @@ TABLES = [
     (
         "Scenes: closest hit",
         "| inputs | exactray ns (wrong) | exactray-exact ns (wrong) | exactray-ploc ns (wrong) | obvhs ns (wrong) "
-        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | exactray-batch ns | exactray-rayon ns | exactray / obvhs "
-        "| exactray / parry3d |",
+        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | embree ns (wrong) | exactray-batch ns | exactray-rayon ns "
+        "| exactray / obvhs | exactray / parry3d |",
         scene_closest,
         ["closest_hit"],
     ),
     (
         "Scenes: shadow rays",
         "| inputs | exactray ns (wrong) | exactray-closest ns (wrong) | exactray-exact ns (wrong) | obvhs ns (wrong) "
-        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | exactray / exactray-closest |",
+        "| obvhs-bvh2 ns (wrong) | parry3d ns (wrong) | embree ns (wrong) | exactray / exactray-closest |",
         scene_any,
         ["any_hit"],
     ),

@@ -14,4 +14,6 @@
 pub mod nearest;
 pub mod raster;
 pub mod scene;
+#[cfg(feature = "embree")]
+pub mod scene_embree;
 pub mod signs;
