@@ -32,7 +32,7 @@ pub struct Fragment {
     pub depth: f64,
     /// Perspective-correct barycentric coordinates of the pixel centre in
     /// the original (unclipped) triangle, for interpolating its vertices'
-    /// attributes; in `[0, 1]`, summing to 1 up to rounding.
+    /// attributes; in `[0, 1]` and summing to 1, up to rounding.
     pub weights: DVec3,
 }
 
@@ -114,7 +114,8 @@ pub fn to_screen(p: DVec4, width: u32, height: u32) -> DVec3 {
 /// - depth is within `(3 beta + gamma(4)) max |z_k / w_k| + max r (1 +
 ///   |z_k / w_k|) / w_k` of the exact `z / w` there.
 ///
-/// These are first-order bounds (second-order terms in `u` dropped); they
+/// These are first-order bounds (second-order terms in `u` dropped, and
+/// products in the edge functions neither underflowing nor overflowing); they
 /// are small where the fan triangle is well shaped on screen (`K`, `D /
 /// A` moderate) and its depth range moderate (`rho`). A barycentric is
 /// clamped to `>= 0` (the exact one is, at a covered centre), so depth
@@ -251,8 +252,9 @@ fn shade(screen: &[ScreenVertex; 3], orientation: f64, x: u32, y: u32, c: DVec2)
         e.max(0.0)
     });
     let sum = edge[0] + edge[1] + edge[2];
-    // A zero or infinite sum arises only where `beta` ([`rasterize_clipped`]) is
-    // beyond 1 anyway: the centroid keeps the values in range.
+    // A zero sum (every product underflowed: a triangle of area near the
+    // smallest floats) or an infinite one (coordinates near the largest):
+    // the centroid keeps the values in range where the bound says nothing.
     let l = if sum > 0.0 && sum.is_finite() {
         edge.map(|e| e / sum)
     } else {
