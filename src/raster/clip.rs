@@ -175,7 +175,7 @@ impl Plane {
 /// The result keeps the input's winding; each vertex carries its
 /// barycentric weights with respect to the input (see [`ClipVertex`] for
 /// their error). Two triangles sharing an edge get bit-identical cut
-/// points on it (the module's docs). A triangle entirely outside gives an
+/// points on it (the [module docs](super)). A triangle entirely outside gives an
 /// empty polygon; one entirely inside gives its three vertices unchanged.
 ///
 /// Errors: [`InputError::NonFinite`] naming `"v0"`, `"v1"` or `"v2"` when
@@ -185,10 +185,11 @@ impl Plane {
 /// ```
 /// use exactray::raster::{ClipPlanes, clip_triangle};
 /// use glam::DVec4;
-/// // One vertex behind the eye (w < 0, z < 0): the near plane cuts the
-/// // two edges leaving it, and the triangle becomes a quadrilateral.
+/// // One vertex behind the eye (w < 0, z < 0; z = w - 0.5 as for a near
+/// // plane at w = 0.5): the near plane cuts the two edges leaving it, and
+/// // the triangle becomes a quadrilateral.
 /// let (a, b) = (DVec4::new(-1.0, 0.0, 0.5, 1.0), DVec4::new(1.0, 0.0, 0.5, 1.0));
-/// let behind = DVec4::new(0.0, 1.0, -0.5, -1.0);
+/// let behind = DVec4::new(0.0, 1.0, -1.5, -1.0);
 /// let polygon = clip_triangle(a, b, behind, ClipPlanes::Near).unwrap();
 /// assert_eq!(polygon.len(), 4);
 /// assert!(polygon.vertices().iter().all(|v| v.position.z >= 0.0 && v.position.w > 0.0));

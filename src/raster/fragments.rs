@@ -32,7 +32,7 @@ pub struct Fragment {
     pub depth: f64,
     /// Perspective-correct barycentric coordinates of the pixel centre in
     /// the original (unclipped) triangle, for interpolating its vertices'
-    /// attributes; in `[0, 1]`, summing to 1 up to rounding.
+    /// attributes; in `[0, 1]` and summing to 1, up to rounding.
     pub weights: DVec3,
 }
 
@@ -72,8 +72,7 @@ pub fn to_screen(p: DVec4, width: u32, height: u32) -> DVec3 {
 /// rows of increasing `y`.
 ///
 /// # Interpolation
-/// A clipped polygon is split into a fan of triangles from its first
-/// vertex. At a covered centre `c` of one of them, the screen-space
+/// At a covered centre `c` of a fan triangle, the screen-space
 /// barycentrics `l_k` of `c` are computed from the three edge functions
 /// (`(s_j - c) x (s_l - c)`, normalized by their sum). `z / w` is affine in
 /// screen space, so depth is `sum l_k z_k / w_k`; the weights are not,
@@ -90,8 +89,8 @@ pub fn to_screen(p: DVec4, width: u32, height: u32) -> DVec3 {
 /// `m_k = |a_j.x| |a_l.y| + |a_j.y| |a_l.x|` for the two others `j, l`,
 /// `K = (m_0 + m_1 + m_2) / A` (the condition of the barycentrics, `>=
 /// 1`), `D = sum_k (|a_k.x| + |a_k.y|)` and `rho = max w_k / min w_k`; let
-/// `j` be the number of planes [`clip_triangle`] used (0 for a polygon not
-/// from it, 1 or 6), `V` the largest magnitude of the input coordinates,
+/// `j` be the number of planes [`clip_triangle`] clipped against (1 or 6),
+/// `V` the largest magnitude of the input coordinates,
 /// `r = 10 j gamma(4) V` (the clip residual, [`ClipVertex`]) and
 ///
 /// `delta = max over k and the axes (x with width, y with height) of
@@ -114,7 +113,8 @@ pub fn to_screen(p: DVec4, width: u32, height: u32) -> DVec3 {
 /// - depth is within `(3 beta + gamma(4)) max |z_k / w_k| + max r (1 +
 ///   |z_k / w_k|) / w_k` of the exact `z / w` there.
 ///
-/// These are first-order bounds (second-order terms in `u` dropped); they
+/// These are first-order bounds (second-order terms in `u` dropped, and
+/// products in the edge functions neither underflowing nor overflowing); they
 /// are small where the fan triangle is well shaped on screen (`K`, `D /
 /// A` moderate) and its depth range moderate (`rho`). A barycentric is
 /// clamped to `>= 0` (the exact one is, at a covered centre), so depth
@@ -153,12 +153,12 @@ pub fn rasterize_clipped(
 /// use glam::DVec3;
 /// let projection = glam::dcamera::rh::proj::directx::perspective(1.0, 1.0, 0.1, 100.0);
 /// let clip = |p: [f64; 3]| projection * DVec3::from(p).extend(1.0);
-/// // A floor under the eye reaching behind it: no fragment lands outside
-/// // depth [0, 1], and the weights sum to 1.
+/// // A floor under the eye reaching behind it: every fragment lands in
+/// // depth [0, 1] (the clipped vertex on the near plane has depth 0).
 /// let (a, b, c) = (clip([-5.0, -1.0, 2.0]), clip([5.0, -1.0, 2.0]), clip([0.0, -1.0, -20.0]));
 /// let n = rasterize_clip_space(a, b, c, ClipPlanes::Near, 32, 32, |f| {
 ///     assert!((0.0..=1.0).contains(&f.depth));
-///     assert!((f.weights.element_sum() - 1.0).abs() < 1e-12);
+///     assert!(f.weights.min_element() >= 0.0);
 /// })
 /// .unwrap();
 /// assert!(n > 0);
@@ -251,8 +251,9 @@ fn shade(screen: &[ScreenVertex; 3], orientation: f64, x: u32, y: u32, c: DVec2)
         e.max(0.0)
     });
     let sum = edge[0] + edge[1] + edge[2];
-    // A zero or infinite sum arises only where `beta` ([`rasterize_clipped`]) is
-    // beyond 1 anyway: the centroid keeps the values in range.
+    // A zero sum (every product underflowed: a triangle of area near the
+    // smallest floats) or an infinite one (coordinates near the largest):
+    // the centroid keeps the values in range where the bound says nothing.
     let l = if sum > 0.0 && sum.is_finite() {
         edge.map(|e| e / sum)
     } else {
