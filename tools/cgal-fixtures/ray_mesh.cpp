@@ -676,6 +676,12 @@ void gen_ray_mesh_files(const std::string& outdir) {
   write_mesh(outdir, far, "far",
              "an octahedron subdivided once (32 triangles; closed), radius 24576, offset (1e8, -7e7, 4e7)", 17, true,
              false, 30);
+  Rng rf(fnv1a("ray_mesh/far-heightfield/mesh"));
+  LatticeMesh far_field = height_field(rf, 8, 4, 6, 0);
+  far_field.shift(I3{1000000, -2000000, 3000000});
+  write_mesh(outdir, far_field, "far-heightfield",
+             "an 8x8 tiled height field (128 triangles; open), integer coordinates, offset (1e6, -2e6, 3e6)", 12,
+             false, true, 40);
   LatticeMesh nested = octasphere(1, 1 << 20, -20), inner = octasphere(1, (1 << 20) - 1, -20);
   int base = int(nested.pts.size());
   for (const I3& p : inner.pts) nested.pts.push_back(p);
