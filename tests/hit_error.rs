@@ -272,11 +272,13 @@ fn cone_hit_points_hold_an_exact_root() {
             certified += 1;
         }
     }
-    // Most lateral hits are certified: not those near tangency, nor those at
-    // scales 2^±500 (two of the five scales drawn), beyond the bracket's
-    // bounds (documented); about 70% here.
+    // Most lateral hits are certified (two thirds here, 4,408 of 6,532,
+    // since the cone's polynomial is scaled at every scale drawn; before, the
+    // hits at 2^±500 were not found or not certified): not those near
+    // tangency.
+    println!("cone lateral hits certified: {certified} of {checked}");
     assert!(
-        checked > 2_000 && certified * 2 > checked,
+        checked > 2_000 && certified * 3 > checked * 2,
         "{certified} of {checked}"
     );
 }

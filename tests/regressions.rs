@@ -762,3 +762,45 @@ fn fuzz_findings() {
         assert_eq!(got, f.oracle, "{label}");
     }
 }
+
+/// Disks, capped cylinders and capped cones at every scale from `1e-300`
+/// to `1e300`: a ray a radius and a half outside the rim misses, one half a
+/// radius inside hits. Their rim, height and nappe tests squared (or raised
+/// to the fourth and sixth powers) lengths in `f64`, which underflowed
+/// below about `1e-51` and overflowed above `1e51`; there every ray down
+/// the axis's direction "hit", far outside the shape.
+#[test]
+fn rims_hold_at_every_scale() {
+    use exactray::interval::Interval;
+    use exactray::query::ray::{Ray, RayCast};
+    use exactray::shape::{CappedCylinder, Cone, Disk};
+    for s in [
+        1e-300, 1e-200, 1e-100, 1e-51, 1.0, 1e51, 1e100, 1e200, 1e300,
+    ] {
+        let disk = Disk::new([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], s).unwrap();
+        let cylinder = CappedCylinder::new([0.0, 0.0, 0.0], [0.0, 0.0, s], s).unwrap();
+        let cone = Cone::new([0.0, 0.0, 0.0], [0.0, 0.0, s], s).unwrap();
+        let down = |x: f64| Ray::new([x * s, 0.0, 2.0 * s], [0.0, 0.0, -1.0]).unwrap();
+        let across = |y: f64| Ray::new([-3.0 * s, y * s, 0.5 * s], [1.0, 0.0, 0.0]).unwrap();
+        let f = Interval::FORWARD;
+        assert!(
+            disk.cast(&down(0.5), f).is_some() && disk.cast(&down(1.5), f).is_none(),
+            "disk {s}"
+        );
+        assert!(
+            cylinder.cast(&down(0.5), f).is_some() && cylinder.cast(&down(1.5), f).is_none(),
+            "cylinder cap {s}"
+        );
+        assert!(
+            cylinder.cast(&across(0.5), f).is_some() && cylinder.cast(&across(1.5), f).is_none(),
+            "cylinder side {s}"
+        );
+        assert!(
+            cone.cast(&down(0.5), f).is_some() && cone.cast(&down(1.5), f).is_none(),
+            "cone {s}"
+        );
+        // Above the cylinder's top cap, parallel to it: no hit on the side.
+        let above = Ray::new([-3.0 * s, 0.0, 1.5 * s], [1.0, 0.0, 0.0]).unwrap();
+        assert!(cylinder.cast(&above, f).is_none(), "above the cylinder {s}");
+    }
+}

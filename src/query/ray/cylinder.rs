@@ -233,8 +233,7 @@ impl RayCast for CappedCylinder {
     /// rim).
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let side = &self.side;
-        let (a, aa) = (side.axis, side.axis.dot(side.axis));
-        let height = |x: DVec3| (x - side.point).dot(a);
+        let a = side.axis;
         let mut best: Option<Hit> = None;
         let mut consider = |t: f64, et: f64, normal: &dyn Fn(DVec3) -> DVec3| {
             if range.admits(t) && best.is_none_or(|b| t < b.t) {
@@ -246,7 +245,9 @@ impl RayCast for CappedCylinder {
             }
         };
         let on_side = |t: f64| {
-            let h = height(ray.at(t));
+            // At the axis's scale (`rim.rs`), so that tiny axes' heights
+            // do not underflow to zero.
+            let (h, aa) = super::rim::heights(ray.at(t) - side.point, a);
             (0.0..=aa).contains(&h)
         };
         let side_normal = |x: DVec3| side.normal_at(x, -ray.direction());
@@ -261,19 +262,22 @@ impl RayCast for CappedCylinder {
             }
             _ => {}
         }
-        // The end disks: h(t) = (o - p) . a + t d . a equals 0 or |a|^2.
-        let (h0, dh) = (height(ray.origin()), ray.direction().dot(a));
+        // The end disks: h(t) = (o - p) . a + t d . a equals 0 or |a|^2,
+        // with the axis at its own scale (`rim.rs`) so that `|a|^2` stays
+        // in range: `a . â` for `|a|^2`, `â` for the other `a`s.
+        let ah = super::rim::unit_axis(a);
+        let (h0, dh) = ((ray.origin() - side.point).dot(ah), ray.direction().dot(ah));
         if dh != 0.0 {
-            let rr = side.radius * side.radius * aa;
             let (e_h0, e_dh) = (
-                dot_error(ray.origin() - side.point, a),
-                dot_error(ray.direction(), a),
+                dot_error(ray.origin() - side.point, ah),
+                dot_error(ray.direction(), ah),
             );
-            for (level, sign) in [(0.0, -1.0), (aa, 1.0)] {
+            for (level, sign) in [(0.0, -1.0), (a.dot(ah), 1.0)] {
                 let num = level - h0;
                 let t = num / dh;
-                let radial = (ray.at(t) - side.point).cross(a);
-                if radial.dot(radial) <= rr {
+                // At the cylinder's scale (`rim.rs`): the fourth powers
+                // neither underflow nor overflow.
+                if super::rim::within_axis_radius(ray.at(t) - side.point, a, side.radius) {
                     // The end plane's level |a|^2 is `aa` within gamma(3) of
                     // it (gamma(4) of the computed `aa`), `h0` within its dot
                     // product's bound, and `num` rounds once more.

@@ -103,7 +103,7 @@ pub struct Hit {
     /// Derived beside each shape's cast from the bound on its `t` (see
     /// `point_error.rs`); infinite where a cast's `t` carries no certified
     /// bound (a cone's side where its a-posteriori bracket fails: near
-    /// tangency, or inputs beyond `2^150` in magnitude).
+    /// tangency).
     pub error: DVec3,
 }
 
@@ -190,6 +190,7 @@ mod cylinder;
 mod plane;
 mod point_error;
 mod quadric;
+mod rim;
 mod sphere;
 
 /// The hit at `t` (a cast's first root inside its range), its normal from

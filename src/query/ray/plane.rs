@@ -42,11 +42,12 @@ impl RayCast for Plane {
 
 impl RayCast for Disk {
     /// The plane's hit, kept when `|x - center|^2 <= radius^2` in `f64`
-    /// (so rays within a few ulps of the rim may go either way).
+    /// at the disk's own power-of-two scale, so that the squares neither
+    /// underflow nor overflow (`rim.rs`; rays within a few ulps of the rim
+    /// may go either way).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let hit = self.plane.cast(ray, range)?;
-        let r = hit.point - self.plane.point;
-        (r.dot(r) <= self.radius * self.radius).then_some(hit)
+        super::rim::within_radius(hit.point - self.plane.point, self.radius).then_some(hit)
     }
 }
