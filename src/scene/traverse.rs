@@ -271,6 +271,16 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
         v.node();
         let node = &bvh.nodes[at];
         let (lower, mut mask) = ray.lanes::<DIVIDE>(node, lo, v.max());
+        // One internal child kept (the common case near the leaves of a
+        // coherent ray): straight to it, without the stack's round trip
+        // (its pop test would compare against the same bound).
+        if mask.is_power_of_two() {
+            let l = mask.trailing_zeros() as usize;
+            if node.count[l] == 0 {
+                at = node.link[l] as usize;
+                continue;
+            }
+        }
         // The lanes kept, sorted by entry, farthest first: pushed in that
         // order, the nearest is popped first.
         let mut kept = [(0.0, 0usize); WIDTH];
