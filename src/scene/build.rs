@@ -1,4 +1,5 @@
-//! The no_std binned-SAH builder of [`TriangleBvh`]: top-down, 12 bins
+//! The no_std binned-SAH builder of the binary [`BinaryBvh`] (collapsed
+//! into the walk's 4-wide tree afterwards, `wide.rs`): top-down, 12 bins
 //! per split along the widest axis of the triangles' box centres, leaves
 //! of up to [`LEAF`] triangles.
 //!
@@ -9,13 +10,14 @@
 //! its area to be finite), it is the median along that axis, which halves
 //! the triangles. A subtree of at most `2^32` triangles reaches leaves of
 //! at most [`LEAF`] after 31 halvings, so no leaf lies deeper than `32 +
-//! 31 = 63` levels, below [`MAX_DEPTH`] (64): the walk's fixed stack of
-//! `MAX_DEPTH` entries (one pending child per level) never overflows.
+//! 31 = 63` levels, below [`MAX_DEPTH`] (64): the walk of the 4-wide tree
+//! collapsed from it, whose fixed stack holds `3 * MAX_DEPTH` entries
+//! (three pending children per wide level, `traverse.rs`), never overflows.
 //!
 //! The heuristic only chooses the tree's shape: boxes are exact, whichever
 //! split is chosen, and so are the queries.
 
-use super::{LEAF, MAX_DEPTH, Node, TriangleBvh};
+use super::{BinaryBvh, LEAF, MAX_DEPTH, Node};
 use alloc::vec::Vec;
 use glam::DVec3;
 
@@ -51,19 +53,20 @@ pub(super) fn bounds(items: &[Item]) -> (DVec3, DVec3) {
         })
 }
 
-/// Half the surface area of a box (what the heuristic compares).
-fn half_area(min: DVec3, max: DVec3) -> f64 {
+/// Half the surface area of a box (what the heuristic compares, and what
+/// the 4-wide collapse opens first, `wide.rs`).
+pub(super) fn half_area(min: DVec3, max: DVec3) -> f64 {
     let e = (max - min).max(DVec3::ZERO);
     e.x * e.y + e.y * e.z + e.z * e.x
 }
 
 /// The tree over `items` (possibly empty).
-pub(super) fn build(mut items: Vec<Item>) -> TriangleBvh {
+pub(super) fn build(mut items: Vec<Item>) -> BinaryBvh {
     let mut nodes = Vec::with_capacity((2 * items.len() / LEAF + 1).max(1));
     if !items.is_empty() {
         subtree(&mut items, 0, 0, &mut nodes);
     }
-    TriangleBvh {
+    BinaryBvh {
         order: items.iter().map(|it| it.index).collect(),
         nodes,
     }

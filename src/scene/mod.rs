@@ -25,11 +25,13 @@
 //! # The hierarchy
 //! Built once by [`TriangleMesh::new`] with a binned surface-area
 //! heuristic (12 bins, leaves of up to [`LEAF`] triangles, depth at most
-//! [`MAX_DEPTH`]; `build.rs`). A node's box is the exact minimum and
-//! maximum of its triangles' vertices: no rounding. The slab test is
+//! [`MAX_DEPTH`]; `build.rs`), then collapsed into a 4-wide tree whose
+//! nodes hold up to four children's boxes side by side (`wide.rs`). A
+//! box is the exact minimum and maximum of its triangles' vertices: no
+//! rounding. The slab test, run on a node's four children at once, is
 //! widened by a derived bound so that it never culls a box that the ray's
 //! exact segment meets (`traverse.rs`), and a query walks with a fixed
-//! stack of [`MAX_DEPTH`] entries: no query allocates.
+//! stack of `3 * MAX_DEPTH` entries: no query allocates.
 //!
 //! # What a query decides
 //! A triangle is hit when the chosen [`TriangleTest`] hits it (the
@@ -79,6 +81,7 @@ mod primitives;
 mod shading;
 mod spawn;
 mod traverse;
+mod wide;
 
 pub use batch::BatchQueries;
 #[cfg(feature = "std")]
@@ -100,22 +103,27 @@ use core::marker::PhantomData;
 use core::mem::size_of;
 use glam::DVec3;
 use traverse::{BoxRay, Visitor, walk};
+use wide::{WideNode, collapse};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;
 
-/// The deepest a leaf lies below the root, plus one: the size of a query's
-/// stack (the builder's bound is 63; see `build.rs`).
+/// The deepest a leaf of the builders' binary trees lies below the root,
+/// plus one (the binned builder's bound is 63, see `build.rs`; the PLOC
+/// builder declines deeper trees): a query's stack holds `3 * MAX_DEPTH`
+/// entries, three pending children per level of the 4-wide tree walked
+/// (`traverse.rs`).
 pub const MAX_DEPTH: usize = 64;
 
 /// Most triangles a mesh holds: `2^31`, so that the `2n - 1` nodes of its
 /// hierarchy are indexed by `u32`.
 pub const MAX_TRIANGLES: usize = 1 << 31;
 
-/// A node of the hierarchy, 56 bytes: its box (`min`, `max`, exact), and
-/// `count > 0` for a leaf holding the triangles `order[link .. link +
-/// count]`, or `count == 0` for an internal node whose first child is the
-/// next node (preorder) and whose second is `nodes[link]`.
+/// A node of the builders' binary tree, 56 bytes: its box (`min`, `max`,
+/// exact), and `count > 0` for a leaf holding the triangles `order[link ..
+/// link + count]`, or `count == 0` for an internal node whose first child
+/// is the next node (preorder) and whose second is `nodes[link]`. The
+/// queries walk it collapsed into 4-wide nodes (`wide.rs`).
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct Node {
@@ -173,12 +181,39 @@ impl Default for BvhBuilder {
     }
 }
 
-/// The hierarchy: nodes in preorder and the triangle indices in leaf
-/// order.
+/// A builder's binary tree: nodes in preorder and the triangle indices in
+/// leaf order.
 #[derive(Clone, Debug)]
-struct TriangleBvh {
+struct BinaryBvh {
     nodes: Vec<Node>,
     order: Vec<u32>,
+}
+
+/// The hierarchy the queries walk: the builder's tree collapsed into 4-wide
+/// nodes (`wide.rs`), the root first, and the triangle indices in leaf
+/// order (the binary tree's, unchanged).
+#[derive(Clone, Debug)]
+struct TriangleBvh {
+    nodes: Vec<WideNode>,
+    order: Vec<u32>,
+}
+
+impl From<BinaryBvh> for TriangleBvh {
+    /// The collapse runs after either builder.
+    fn from(binary: BinaryBvh) -> TriangleBvh {
+        TriangleBvh {
+            nodes: collapse(&binary),
+            order: binary.order,
+        }
+    }
+}
+
+impl TriangleBvh {
+    /// The exact box of every triangle in the hierarchy, `None` when it
+    /// holds none.
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        self.nodes.first().map(WideNode::bounds)
+    }
 }
 
 /// An indexed triangle mesh in `f64` with its hierarchy, ready for ray
@@ -281,13 +316,14 @@ impl TriangleMesh {
                 })
             })
             .collect();
-        mesh.bvh = match builder {
+        let binary = match builder {
             BvhBuilder::BinnedSah => build::build(items),
             #[cfg(feature = "std")]
             BvhBuilder::Ploc(quality) => {
                 ploc::build(&items, quality).unwrap_or_else(|| build::build(items))
             }
         };
+        mesh.bvh = binary.into();
         Ok(mesh)
     }
 
@@ -365,10 +401,11 @@ impl TriangleMesh {
         }
     }
 
-    /// The nodes of the hierarchy and the bytes it takes beside the mesh
-    /// (nodes and the leaf order), for tests and reports.
+    /// The bytes the hierarchy takes beside the mesh (the 4-wide nodes the
+    /// queries walk and the leaf order; the builder's binary tree is not
+    /// kept), for tests and reports.
     pub fn bvh_bytes(&self) -> usize {
-        self.bvh.nodes.len() * size_of::<Node>() + self.bvh.order.len() * size_of::<u32>()
+        self.bvh.nodes.len() * size_of::<WideNode>() + self.bvh.order.len() * size_of::<u32>()
     }
 
     /// The closest hit of `ray` for `t` in `range`, with the watertight
@@ -547,8 +584,8 @@ fn certified_hit<T: TriangleTest>(
 /// The work one query did: see [`TriangleMesh::closest_hit_with_stats`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TraceStats {
-    /// Nodes of the hierarchy the walk looked at (an internal node's two
-    /// box tests, or a leaf's triangles).
+    /// Nodes of the hierarchy the walk looked at: a 4-wide node (its
+    /// children's box tests, in one pass), or a leaf (its triangles).
     pub nodes_visited: u64,
     /// Triangles tested in the leaves reached.
     pub triangles_tested: u64,
@@ -683,13 +720,20 @@ impl RayCast for TriangleMesh {
 mod tests {
     use super::*;
 
+    use wide::WIDTH;
+
+    /// Whether lane `l` holds a box (empty lanes are inverted).
+    fn used(n: &WideNode, l: usize) -> bool {
+        n.min[0][l] <= n.max[0][l]
+    }
+
+    /// The wide tree's levels of nodes below `at`, `at`'s own included.
     fn depth(bvh: &TriangleBvh, at: usize) -> usize {
         let n = &bvh.nodes[at];
-        if n.count > 0 {
-            1
-        } else {
-            1 + depth(bvh, at + 1).max(depth(bvh, n.link as usize))
-        }
+        let below = (0..WIDTH)
+            .filter(|&l| used(n, l) && n.count[l] == 0)
+            .map(|l| depth(bvh, n.link[l] as usize));
+        1 + below.max().unwrap_or(0)
     }
 
     /// The depth bound holds where the heuristic splits worst: triangles
@@ -708,10 +752,59 @@ mod tests {
             triangles.push([0, 1, 2]);
         }
         let mesh = TriangleMesh::new(&vertices, &triangles).unwrap();
-        let d = depth(&mesh.bvh, 0);
-        assert!(d <= MAX_DEPTH && d > 10, "{d}");
-        let leaves = mesh.bvh.nodes.iter().filter(|n| n.count > 0);
-        assert!(leaves.clone().all(|n| n.count as usize <= LEAF));
-        assert_eq!(leaves.map(|n| n.count as usize).sum::<usize>(), 6000);
+        let bvh = &mesh.bvh;
+        let d = depth(bvh, 0);
+        // Fewer wide levels than MAX_DEPTH: the walk's stack of three
+        // pending children per level holds them.
+        assert!(d < MAX_DEPTH && d > 5, "{d}");
+        let mut triangles_in_leaves = 0;
+        for n in &bvh.nodes {
+            for l in (0..WIDTH).filter(|&l| used(n, l)) {
+                let lane = (
+                    DVec3::new(n.min[0][l], n.min[1][l], n.min[2][l]),
+                    DVec3::new(n.max[0][l], n.max[1][l], n.max[2][l]),
+                );
+                // Every lane's box is its subtree's exact box.
+                if n.count[l] == 0 {
+                    assert_eq!(lane, bvh.nodes[n.link[l] as usize].bounds());
+                } else {
+                    assert!(n.count[l] as usize <= LEAF);
+                    triangles_in_leaves += n.count[l] as usize;
+                    let start = n.link[l] as usize;
+                    let mut want = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+                    for &t in &bvh.order[start..start + n.count[l] as usize] {
+                        for p in mesh.shape(t).v {
+                            want = (want.0.min(p), want.1.max(p));
+                        }
+                    }
+                    assert_eq!(lane, want);
+                }
+            }
+            // Lanes fill from the first: a node holds at least two
+            // children unless it is a root leaf.
+            let lanes = (0..WIDTH).filter(|&l| used(n, l)).count();
+            assert!(lanes >= 2 || bvh.nodes.len() == 1);
+            assert!((0..lanes).all(|l| used(n, l)));
+        }
+        assert_eq!(triangles_in_leaves, 6000);
+    }
+
+    /// One triangle: one wide node whose first lane is the leaf; the empty
+    /// mesh: no node, and `bvh_bytes` counts the wide nodes.
+    #[test]
+    fn small_trees_collapse() {
+        let vertices = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let one = TriangleMesh::new(&vertices, &[[0, 1, 2]]).unwrap();
+        assert_eq!(one.bvh.nodes.len(), 1);
+        assert_eq!(
+            (one.bvh.nodes[0].count, one.bvh.nodes[0].link),
+            ([1, 0, 0, 0], [0; 4])
+        );
+        assert_eq!(one.bvh_bytes(), 224 + 4);
+        let none = TriangleMesh::new(&vertices, &[[0, 0, 1]]).unwrap();
+        assert!(none.bvh.nodes.is_empty() && none.bvh.bounds().is_none());
+        let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();
+        assert_eq!(one.closest_hit(&ray, Interval::FORWARD).unwrap().hit.t, 1.0);
+        assert!(none.closest_hit(&ray, Interval::FORWARD).is_none());
     }
 }

@@ -1,4 +1,4 @@
-//! The `std` builder of [`TriangleBvh`] through obvhs: PLOC (Meister and
+//! The `std` builder of [`BinaryBvh`] through obvhs: PLOC (Meister and
 //! Bittner, "Parallel Locally-Ordered Clustering for Bounding Volume
 //! Hierarchy Construction", 2018) with reinsertion and leaf collapse, as
 //! obvhs's [`BvhBuildParams`] presets configure them.
@@ -8,17 +8,20 @@
 //! scaled by a power of two that brings their half extent into `[1/2, 1)`,
 //! so that `f32`'s rounding is relative to the mesh's size rather than to
 //! its distance from the origin (a mesh at `1e8` keeps its shape). The
-//! nodes are then written out in the walk's preorder layout with the
-//! exact boxes of their triangles, recomputed from the `f64` items: the
-//! queries are exactly as conservative as with the binned builder.
+//! nodes are then written out in the binned builder's preorder layout with
+//! the exact boxes of their triangles, recomputed from the `f64` items,
+//! and collapsed into the walk's 4-wide tree as the binned builder's are
+//! (`wide.rs`): the queries are exactly as conservative as with the binned
+//! builder.
 //!
-//! The walk's stack holds [`MAX_DEPTH`] entries. PLOC bounds no depth, so
+//! The walk's stack is sized from [`MAX_DEPTH`] levels of the binary tree
+//! (`traverse.rs`). PLOC bounds no depth, so
 //! a tree deeper than that, or with a leaf of more than [`LEAF`]
 //! triangles, is declined (`None`) and the caller builds with the binned
 //! builder instead.
 
 use super::build::{Item, bounds};
-use super::{LEAF, MAX_DEPTH, Node, TriangleBvh};
+use super::{BinaryBvh, LEAF, MAX_DEPTH, Node};
 use crate::arith::exponent::{scale_pow2, unit_scale};
 use alloc::vec;
 use alloc::vec::Vec;
@@ -65,9 +68,9 @@ impl Boundable for Proxy {
 
 /// The tree over `items` built by obvhs, or `None` where it would not fit
 /// the walk (see the module docs).
-pub(super) fn build(items: &[Item], quality: PlocQuality) -> Option<TriangleBvh> {
+pub(super) fn build(items: &[Item], quality: PlocQuality) -> Option<BinaryBvh> {
     if items.is_empty() {
-        return Some(TriangleBvh {
+        return Some(BinaryBvh {
             nodes: Vec::new(),
             order: Vec::new(),
         });
@@ -122,10 +125,10 @@ fn proxies(items: &[Item]) -> Vec<Proxy> {
         .collect()
 }
 
-/// obvhs's nodes in the walk's preorder layout (first child next, second
+/// obvhs's nodes in the binned builder's preorder layout (first child next, second
 /// at `link`), with exact boxes; `None` for a tree deeper than
 /// [`MAX_DEPTH`] or a leaf above [`LEAF`].
-fn convert(bvh2: &Bvh2, items: &[Item]) -> Option<TriangleBvh> {
+fn convert(bvh2: &Bvh2, items: &[Item]) -> Option<BinaryBvh> {
     let mut nodes: Vec<Node> = Vec::with_capacity(bvh2.nodes.len());
     let mut order = Vec::with_capacity(items.len());
     // (obvhs node, depth, the parent whose `link` is this node).
@@ -169,7 +172,7 @@ fn convert(bvh2: &Bvh2, items: &[Item]) -> Option<TriangleBvh> {
             nodes[at].grow(b.min.into(), b.max.into());
         }
     }
-    (order.len() == items.len()).then_some(TriangleBvh { nodes, order })
+    (order.len() == items.len()).then_some(BinaryBvh { nodes, order })
 }
 
 #[cfg(test)]

@@ -187,12 +187,8 @@ impl SceneBuilder {
                 // A mesh without a root has no hittable triangle: never
                 // tested.
                 Primitive::Mesh(mesh) => {
-                    if let Some(root) = mesh.bvh.nodes.first() {
-                        items.push(Item {
-                            min: DVec3::from_array(root.min),
-                            max: DVec3::from_array(root.max),
-                            index,
-                        });
+                    if let Some((min, max)) = mesh.bvh.bounds() {
+                        items.push(Item { min, max, index });
                     }
                 }
                 Primitive::Shape(shape) => match shape
@@ -210,7 +206,7 @@ impl SceneBuilder {
         }
         Scene {
             primitives: self.primitives,
-            bvh: build::build(items),
+            bvh: build::build(items).into(),
             unbounded,
         }
     }

@@ -1,0 +1,182 @@
+//! The 4-wide hierarchy the queries walk: either builder's binary tree
+//! collapsed into nodes of up to [`WIDTH`] children, each child's box
+//! stored beside its siblings' (one `[f64; WIDTH]` per bound per axis),
+//! so that the walk tests all of a node's children in one pass over
+//! fixed-size arrays (`traverse.rs`).
+//!
+//! # The collapse
+//! A binary subtree of at most [`LEAF`] triangles (a builder's leaf, or
+//! an internal node over two small leaves) is taken as one leaf lane: its
+//! triangles are contiguous in the leaf order (preorder puts a subtree's
+//! leaves together), and its box is its root's. A wide node starts from
+//! a larger binary node's two children and repeatedly replaces its
+//! non-leaf child of largest surface area by that child's two children,
+//! until it holds [`WIDTH`] children or only leaves (the collapse of a
+//! binary SAH tree into a multi-branching one of Wald, Benthin and
+//! Boulos, "Getting Rid of Packets", 2008). Each lane is then a leaf (it
+//! holds the triangles) or links the wide node collapsed from its binary
+//! node. A binary tree of at most [`LEAF`] triangles becomes one wide
+//! node with one lane. Boxes are copied, never recomputed: they stay the
+//! exact boxes of the builders.
+//!
+//! Taking small subtrees whole halved the terrain's wide nodes (leaves of
+//! the binned builder hold two triangles on average, so most bottom
+//! nodes held two or three lanes), for 4 to 6% more instructions per ray
+//! (see ARCHITECTURE.md's design history).
+//!
+//! Every wide node's internal lanes link binary nodes strictly deeper
+//! than the binary node it was collapsed from, so a path of wide nodes
+//! from the root passes at most as many wide internal nodes as its
+//! binary path had internal nodes: fewer than [`MAX_DEPTH`] (the
+//! builders' bound, `build.rs` and `ploc.rs`).
+//!
+//! # Empty lanes
+//! A node with fewer than [`WIDTH`] children fills the rest with an
+//! inverted box, `min = +inf` and `max = -inf` on every axis. Whatever
+//! the ray, every slab of that box computes an entry of `+inf` and an
+//! exit of `-inf` (`(+inf - o) * inv` is `+inf` for `inv > 0`, and the
+//! bounds swap with the sign of `inv`, `-0.0`'s too; no product is `inf
+//! * 0`, as `inv` is never zero and the dividing path divides by a
+//! finite direction), so the widened entry is `inf - inf = NaN` and the
+//! lane fails the walk's `<=`: culled by construction, never followed.
+//!
+//! [`MAX_DEPTH`]: super::MAX_DEPTH
+
+use super::build::half_area;
+use super::{BinaryBvh, LEAF, Node};
+use alloc::vec;
+use alloc::vec::Vec;
+use core::mem::size_of;
+use glam::DVec3;
+
+/// Children per wide node.
+pub(super) const WIDTH: usize = 4;
+
+/// A wide node, 224 bytes: per lane `l` the child's box (`min[k][l]`,
+/// `max[k][l]` on axis `k`, exact), and `count[l] > 0` for a leaf holding
+/// the triangles `order[link[l] .. link[l] + count[l]]`, `count[l] == 0`
+/// for an internal child `nodes[link[l]]` (or an empty lane: inverted
+/// box, see the module docs).
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(32))]
+pub(crate) struct WideNode {
+    pub(super) min: [[f64; WIDTH]; 3],
+    pub(super) max: [[f64; WIDTH]; 3],
+    pub(super) link: [u32; WIDTH],
+    pub(super) count: [u32; WIDTH],
+}
+
+// Six SoA bound rows of four `f64` and two rows of four `u32`: 224 bytes,
+// seven 32-byte lines' worth, each row starting on a 32-byte boundary
+// (the rows are what the walk loads).
+const _: () = assert!(size_of::<WideNode>() == 224);
+const _: () = assert!(core::mem::align_of::<WideNode>() == 32);
+
+impl WideNode {
+    /// Every lane empty (see the module docs).
+    pub(super) const EMPTY: WideNode = WideNode {
+        min: [[f64::INFINITY; WIDTH]; 3],
+        max: [[f64::NEG_INFINITY; WIDTH]; 3],
+        link: [0; WIDTH],
+        count: [0; WIDTH],
+    };
+
+    /// Puts binary node `b`'s box in lane `l`.
+    fn set_box(&mut self, l: usize, b: &Node) {
+        for k in 0..3 {
+            self.min[k][l] = b.min[k];
+            self.max[k][l] = b.max[k];
+        }
+    }
+
+    /// The union of the lanes' boxes (exact; empty lanes add nothing).
+    pub(super) fn bounds(&self) -> (DVec3, DVec3) {
+        let mut lo = DVec3::INFINITY;
+        let mut hi = DVec3::NEG_INFINITY;
+        for l in 0..WIDTH {
+            let (a, b) = (
+                DVec3::new(self.min[0][l], self.min[1][l], self.min[2][l]),
+                DVec3::new(self.max[0][l], self.max[1][l], self.max[2][l]),
+            );
+            lo = lo.min(a);
+            hi = hi.max(b);
+        }
+        (lo, hi)
+    }
+}
+
+/// The wide nodes collapsed from `binary` (see the module docs), the
+/// root first and each node before its children.
+pub(super) fn collapse(binary: &BinaryBvh) -> Vec<WideNode> {
+    let nodes = &binary.nodes;
+    // About three binary internal nodes per wide node.
+    let mut wide = Vec::with_capacity(nodes.len() / 6 + 1);
+    if nodes.is_empty() {
+        return wide;
+    }
+    let leaves = subtree_leaves(nodes);
+    // A binary node taken as one leaf lane: a leaf, or a subtree of at
+    // most LEAF triangles (contiguous in the leaf order).
+    let is_leaf = |b: usize| leaves[b].1 as usize <= LEAF;
+    // (binary node, the wide lane that links the node made from it).
+    let mut pending = vec![(0usize, None::<(usize, usize)>)];
+    while let Some((b, parent)) = pending.pop() {
+        let here = wide.len();
+        if let Some((p, l)) = parent {
+            wide[p].link[l] = here as u32;
+        }
+        let mut children = [b; WIDTH];
+        let mut n = 1;
+        if !is_leaf(b) {
+            children[..2].copy_from_slice(&[b + 1, nodes[b].link as usize]);
+            n = 2;
+            while n < WIDTH {
+                // The non-leaf child of largest area, opened in place.
+                let open = (0..n).filter(|&i| !is_leaf(children[i])).max_by(|&i, &j| {
+                    area(&nodes[children[i]]).total_cmp(&area(&nodes[children[j]]))
+                });
+                let Some(i) = open else { break };
+                let c = children[i];
+                children[i] = c + 1;
+                children[n] = nodes[c].link as usize;
+                n += 1;
+            }
+        }
+        let mut node = WideNode::EMPTY;
+        for (l, &c) in children[..n].iter().enumerate() {
+            node.set_box(l, &nodes[c]);
+            if is_leaf(c) {
+                (node.link[l], node.count[l]) = leaves[c];
+            }
+        }
+        wide.push(node);
+        // Pushed last-lane first, so that lane 0's subtree follows its
+        // parent in memory.
+        for (l, &c) in children[..n].iter().enumerate().rev() {
+            if !is_leaf(c) {
+                pending.push((c, Some((here, l))));
+            }
+        }
+    }
+    wide
+}
+
+/// Per binary node, where its subtree's triangles start in the leaf order
+/// and how many there are (preorder: a subtree's leaves are contiguous,
+/// its first child's first).
+fn subtree_leaves(nodes: &[Node]) -> Vec<(u32, u32)> {
+    let mut out: Vec<(u32, u32)> = nodes.iter().map(|n| (n.link, n.count)).collect();
+    // Children follow their parents: a reverse sweep sees both first.
+    for at in (0..nodes.len()).rev() {
+        if nodes[at].count == 0 {
+            let (a, b) = (out[at + 1], out[nodes[at].link as usize]);
+            out[at] = (a.0, a.1.saturating_add(b.1));
+        }
+    }
+    out
+}
+
+/// What the collapse opens first: a binary node's half surface area.
+fn area(n: &Node) -> f64 {
+    half_area(DVec3::from(n.min), DVec3::from(n.max))
+}
