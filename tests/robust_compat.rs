@@ -17,19 +17,6 @@ use exactray::testing::{
     InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
 };
 use exactray_oracle::oracle;
-use glam::{DVec2, DVec3};
-
-fn c2(p: DVec2) -> Coord<f64> {
-    Coord { x: p.x, y: p.y }
-}
-
-fn c3(p: DVec3) -> Coord3D<f64> {
-    Coord3D {
-        x: p.x,
-        y: p.y,
-        z: p.z,
-    }
-}
 
 /// The sign a caller reads with `> 0.0`, `< 0.0`, `== 0.0`; `None` for NaN,
 /// which answers none of them.
@@ -45,8 +32,7 @@ fn sign_of(v: f64) -> Option<i8> {
     }
 }
 
-/// The four predicates on one case, through robust, through the door, and
-/// the oracle's answer in Shewchuk's convention.
+/// The four predicates, for the per-class table.
 #[derive(Clone, Copy, Debug)]
 enum Predicate {
     Orient2d,
@@ -73,51 +59,67 @@ impl Predicate {
     }
 }
 
-/// One case: `(robust's value, the door's value, the exact sign in
-/// Shewchuk's convention)`.
-fn evaluate(
-    predicate: Predicate,
-    class: InputClass,
-    rng: &mut SplitMix64,
-) -> (f64, f64, i8, String) {
+/// robust's value, the door's value and the exact sign in Shewchuk's
+/// convention, on one case of a predicate.
+type Answers = (f64, f64, i8);
+
+fn on_orient2d([a, b, c]: [[f64; 2]; 3]) -> Answers {
+    let p = |[x, y]: [f64; 2]| Coord { x, y };
+    (
+        robust::orient2d(p(a), p(b), p(c)),
+        robust_compat::orient2d(p(a), p(b), p(c)),
+        oracle::orient2d(a, b, c),
+    )
+}
+
+fn on_orient3d([a, b, c, d]: [[f64; 3]; 4]) -> Answers {
+    let p = |[x, y, z]: [f64; 3]| Coord3D { x, y, z };
+    (
+        robust::orient3d(p(a), p(b), p(c), p(d)),
+        robust_compat::orient3d(p(a), p(b), p(c), p(d)),
+        // The oracle is CGAL's orientation, Shewchuk's negated.
+        -oracle::orient3d(a, b, c, d),
+    )
+}
+
+fn on_incircle([a, b, c, d]: [[f64; 2]; 4]) -> Answers {
+    let p = |[x, y]: [f64; 2]| Coord { x, y };
+    (
+        robust::incircle(p(a), p(b), p(c), p(d)),
+        robust_compat::incircle(p(a), p(b), p(c), p(d)),
+        oracle::incircle(a, b, c, d),
+    )
+}
+
+fn on_insphere([a, b, c, d, e]: [[f64; 3]; 5]) -> Answers {
+    let p = |[x, y, z]: [f64; 3]| Coord3D { x, y, z };
+    (
+        robust::insphere(p(a), p(b), p(c), p(d), p(e)),
+        robust_compat::insphere(p(a), p(b), p(c), p(d), p(e)),
+        // The oracle is CGAL's oriented sphere, Shewchuk's negated.
+        -oracle::insphere(a, b, c, d, e),
+    )
+}
+
+/// One generated case of a predicate and class: its answers and its
+/// points, for a failure message.
+fn evaluate(predicate: Predicate, class: InputClass, rng: &mut SplitMix64) -> (Answers, String) {
     match predicate {
         Predicate::Orient2d => {
-            let [a, b, c] = orient2d_case(class, rng);
-            (
-                robust::orient2d(c2(a), c2(b), c2(c)),
-                robust_compat::orient2d(c2(a), c2(b), c2(c)),
-                oracle::orient2d(a.into(), b.into(), c.into()),
-                format!("{:?}", [a, b, c]),
-            )
+            let case = orient2d_case(class, rng).map(|p| p.to_array());
+            (on_orient2d(case), format!("{case:?}"))
         }
         Predicate::Orient3d => {
-            let [a, b, c, d] = orient3d_case(class, rng);
-            (
-                robust::orient3d(c3(a), c3(b), c3(c), c3(d)),
-                robust_compat::orient3d(c3(a), c3(b), c3(c), c3(d)),
-                // The oracle is CGAL's orientation, Shewchuk's negated.
-                -oracle::orient3d(a.into(), b.into(), c.into(), d.into()),
-                format!("{:?}", [a, b, c, d]),
-            )
+            let case = orient3d_case(class, rng).map(|p| p.to_array());
+            (on_orient3d(case), format!("{case:?}"))
         }
         Predicate::Incircle => {
-            let [a, b, c, d] = incircle_case(class, rng);
-            (
-                robust::incircle(c2(a), c2(b), c2(c), c2(d)),
-                robust_compat::incircle(c2(a), c2(b), c2(c), c2(d)),
-                oracle::incircle(a.into(), b.into(), c.into(), d.into()),
-                format!("{:?}", [a, b, c, d]),
-            )
+            let case = incircle_case(class, rng).map(|p| p.to_array());
+            (on_incircle(case), format!("{case:?}"))
         }
         Predicate::Insphere => {
-            let [a, b, c, d, e] = insphere_case(class, rng);
-            (
-                robust::insphere(c3(a), c3(b), c3(c), c3(d), c3(e)),
-                robust_compat::insphere(c3(a), c3(b), c3(c), c3(d), c3(e)),
-                // The oracle is CGAL's oriented sphere, Shewchuk's negated.
-                -oracle::insphere(a.into(), b.into(), c.into(), d.into(), e.into()),
-                format!("{:?}", [a, b, c, d, e]),
-            )
+            let case = insphere_case(class, rng).map(|p| p.to_array());
+            (on_insphere(case), format!("{case:?}"))
         }
     }
 }
@@ -284,7 +286,7 @@ fn exact_on_every_input_class() {
             );
             let mut robust_wrong = 0;
             for _ in 0..cases_per_class {
-                let (theirs, ours, exact, case) = evaluate(predicate, class, &mut rng);
+                let ((theirs, ours, exact), case) = evaluate(predicate, class, &mut rng);
                 assert_eq!(
                     sign_of(ours),
                     Some(exact),
@@ -321,158 +323,61 @@ fn exact_on_every_input_class() {
 /// (or NaN), the door's is the exact one.
 #[test]
 fn exact_where_robust_is_wrong() {
-    let p2 = |x: f64, y: f64| Coord { x, y };
-    let p3 = |x: f64, y: f64, z: f64| Coord3D { x, y, z };
     let up = |x: f64| f64::from_bits(x.to_bits() + 1);
-    // (label, robust's value, the door's value, the exact sign)
-    let cases: Vec<(&str, f64, f64, i8)> = vec![
-        {
-            // c one ulp above the line y = x, at 1e-160: the products are
-            // subnormal and the determinant underflows to zero.
-            let (a, b, c) = (p2(0.0, 0.0), p2(1e-160, 1e-160), p2(3e-160, up(3e-160)));
-            let exact = oracle::orient2d([0.0, 0.0], [1e-160, 1e-160], [3e-160, up(3e-160)]);
-            (
-                "orient2d 1e-160",
-                robust::orient2d(a, b, c),
-                robust_compat::orient2d(a, b, c),
-                exact,
-            )
-        },
-        {
-            // The same at 1e+160: the products overflow.
-            let (a, b, c) = (p2(0.0, 0.0), p2(1e160, 1e160), p2(3e160, up(3e160)));
-            let exact = oracle::orient2d([0.0, 0.0], [1e160, 1e160], [3e160, up(3e160)]);
-            (
-                "orient2d 1e+160",
-                robust::orient2d(a, b, c),
-                robust_compat::orient2d(a, b, c),
-                exact,
-            )
-        },
-        {
-            // 1e-300 above the line through +-1e300 (the README's case).
-            let (a, b, c) = (p2(-1e300, -1e300), p2(1e300, 1e300), p2(0.0, 1e-300));
-            let exact = oracle::orient2d([-1e300, -1e300], [1e300, 1e300], [0.0, 1e-300]);
-            (
-                "orient2d mixed",
-                robust::orient2d(a, b, c),
-                robust_compat::orient2d(a, b, c),
-                exact,
-            )
-        },
-        {
-            // A unit tetrahedron scaled by 1e-160: volume 1e-480.
-            let s = 1e-160;
-            let (a, b, c, d) = (
-                p3(0.0, 0.0, 0.0),
-                p3(s, 0.0, 0.0),
-                p3(0.0, s, 0.0),
-                p3(0.0, 0.0, s),
-            );
-            let exact = -oracle::orient3d([0.0; 3], [s, 0.0, 0.0], [0.0, s, 0.0], [0.0, 0.0, s]);
-            (
-                "orient3d 1e-160",
-                robust::orient3d(a, b, c, d),
-                robust_compat::orient3d(a, b, c, d),
-                exact,
-            )
-        },
-        {
-            // d 1e-300 off the plane z = 0 spanned by 1e300 vectors.
-            let (a, b, c, d) = (
-                p3(0.0, 0.0, 0.0),
-                p3(1e300, 1e300, 0.0),
-                p3(-1e300, 1e300, 0.0),
-                p3(1e300, -1e300, 1e-300),
-            );
-            let exact = -oracle::orient3d(
+    // A positive unit tetrahedron in Shewchuk's orientation (d below the
+    // counterclockwise a, b, c) and a point inside its sphere, scaled by s.
+    let tetrahedron = |s: f64| {
+        let t = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, -1.0],
+        ];
+        let [a, b, c, d] = t.map(|p| p.map(|x| s * x));
+        [a, b, c, d, [s / 4.0, s / 4.0, -s / 4.0]]
+    };
+    // The unit circle's centre, scaled by s.
+    let circle = |s: f64| [[s, 0.0], [0.0, s], [-s, 0.0], [0.0, 0.0]];
+    let cases = [
+        // c one ulp above the line y = x, at 1e-160: the products are
+        // subnormal and the determinant underflows to zero.
+        (
+            "orient2d 1e-160",
+            on_orient2d([[0.0, 0.0], [1e-160, 1e-160], [3e-160, up(3e-160)]]),
+        ),
+        // The same at 1e+160: the products overflow.
+        (
+            "orient2d 1e+160",
+            on_orient2d([[0.0, 0.0], [1e160, 1e160], [3e160, up(3e160)]]),
+        ),
+        // 1e-300 above the line through +-1e300 (the README's case).
+        (
+            "orient2d mixed",
+            on_orient2d([[-1e300, -1e300], [1e300, 1e300], [0.0, 1e-300]]),
+        ),
+        // A unit tetrahedron scaled by 1e-160: volume 1e-480.
+        ("orient3d 1e-160", {
+            let [a, b, c, d, _] = tetrahedron(1e-160);
+            on_orient3d([a, b, c, d])
+        }),
+        // d 1e-300 off the plane z = 0 spanned by 1e300 vectors.
+        (
+            "orient3d mixed",
+            on_orient3d([
                 [0.0; 3],
                 [1e300, 1e300, 0.0],
                 [-1e300, 1e300, 0.0],
                 [1e300, -1e300, 1e-300],
-            );
-            (
-                "orient3d mixed",
-                robust::orient3d(a, b, c, d),
-                robust_compat::orient3d(a, b, c, d),
-                exact,
-            )
-        },
-        {
-            // The unit circle's centre, at 1e-160: degree-4 terms underflow.
-            let s = 1e-160;
-            let (a, b, c, d) = (p2(s, 0.0), p2(0.0, s), p2(-s, 0.0), p2(0.0, 0.0));
-            let exact = oracle::incircle([s, 0.0], [0.0, s], [-s, 0.0], [0.0, 0.0]);
-            (
-                "incircle 1e-160",
-                robust::incircle(a, b, c, d),
-                robust_compat::incircle(a, b, c, d),
-                exact,
-            )
-        },
-        {
-            // The same at 1e+160: they overflow.
-            let s = 1e160;
-            let (a, b, c, d) = (p2(s, 0.0), p2(0.0, s), p2(-s, 0.0), p2(0.0, 0.0));
-            let exact = oracle::incircle([s, 0.0], [0.0, s], [-s, 0.0], [0.0, 0.0]);
-            (
-                "incircle 1e+160",
-                robust::incircle(a, b, c, d),
-                robust_compat::incircle(a, b, c, d),
-                exact,
-            )
-        },
-        {
-            // A positive unit tetrahedron and a point inside its sphere,
-            // at 1e-160: degree-5 terms underflow.
-            let s = 1e-160;
-            let (a, b, c, d, e) = (
-                p3(0.0, 0.0, 0.0),
-                p3(s, 0.0, 0.0),
-                p3(0.0, s, 0.0),
-                p3(0.0, 0.0, -s),
-                p3(s / 4.0, s / 4.0, -s / 4.0),
-            );
-            let exact = -oracle::insphere(
-                [0.0; 3],
-                [s, 0.0, 0.0],
-                [0.0, s, 0.0],
-                [0.0, 0.0, -s],
-                [s / 4.0, s / 4.0, -s / 4.0],
-            );
-            (
-                "insphere 1e-160",
-                robust::insphere(a, b, c, d, e),
-                robust_compat::insphere(a, b, c, d, e),
-                exact,
-            )
-        },
-        {
-            // The same at 1e+160: they overflow.
-            let s = 1e160;
-            let (a, b, c, d, e) = (
-                p3(0.0, 0.0, 0.0),
-                p3(s, 0.0, 0.0),
-                p3(0.0, s, 0.0),
-                p3(0.0, 0.0, -s),
-                p3(s / 4.0, s / 4.0, -s / 4.0),
-            );
-            let exact = -oracle::insphere(
-                [0.0; 3],
-                [s, 0.0, 0.0],
-                [0.0, s, 0.0],
-                [0.0, 0.0, -s],
-                [s / 4.0, s / 4.0, -s / 4.0],
-            );
-            (
-                "insphere 1e+160",
-                robust::insphere(a, b, c, d, e),
-                robust_compat::insphere(a, b, c, d, e),
-                exact,
-            )
-        },
+            ]),
+        ),
+        // Degree-4 terms underflow, then overflow.
+        ("incircle 1e-160", on_incircle(circle(1e-160))),
+        ("incircle 1e+160", on_incircle(circle(1e160))),
+        // Degree-5 terms underflow, then overflow.
+        ("insphere 1e-160", on_insphere(tetrahedron(1e-160))),
+        ("insphere 1e+160", on_insphere(tetrahedron(1e160))),
     ];
-    for (label, theirs, ours, exact) in cases {
+    for (label, (theirs, ours, exact)) in cases {
         assert_ne!(exact, 0, "{label}: the cases are not degenerate");
         assert_eq!(
             sign_of(ours),

@@ -37,11 +37,12 @@
 //! [`Coord`] and [`Coord3D`] are `robust`'s own types, re-exported, not
 //! look-alikes: values, type annotations and function pointers written for
 //! `robust` keep compiling, and code halfway through a switch can pass the
-//! same points to both. The price is that this module's signature follows
-//! `robust`'s major version (today 1.x; Cargo unifies a user's `robust` 1.x
-//! with this crate's, so the types are the same).
+//! same points to both (no `From` conversion is needed: there is one type).
+//! The price is that this module's signature follows `robust`'s major
+//! version (today 1.x; Cargo unifies a user's `robust` 1.x with this
+//! crate's, so the types are the same).
 //!
-//! # Sign conventions (Shewchuk's, not those of [`super`])
+//! # Sign conventions (Shewchuk's)
 //! - [`orient2d`]`(pa, pb, pc)` is positive when `pa, pb, pc` turn
 //!   counterclockwise: the same sign as [`super::orient2d`].
 //! - [`orient3d`]`(pa, pb, pc, pd)` is positive when `pd` lies *below* the
@@ -62,8 +63,9 @@
 //! - `0.0` exactly (positive zero) when the determinant is zero;
 //! - otherwise, Shewchuk's first-stage `f64` evaluation of the determinant
 //!   (`robust`'s, same formula and order of operations) when it is finite and
-//!   of the exact sign; when `robust` certifies that evaluation, as it does
-//!   for almost all ordinary inputs, this is its return value to the bit;
+//!   of the exact sign; wherever `robust` returns that evaluation with the
+//!   exact sign (its first stage certified it, as it does for almost all
+//!   ordinary inputs), this is its return value to the bit;
 //! - otherwise (that evaluation underflowed to zero, overflowed, or has the
 //!   wrong sign on a near-degenerate input) `f64::MIN_POSITIVE` with the exact
 //!   sign, a value that carries the sign and nothing else.
@@ -79,8 +81,8 @@
 //!
 //! # Performance
 //! One call costs the matching predicate of [`super`] plus the first-stage
-//! evaluation beside it (which the compiler shares with the filter's
-//! products where the formulas agree).
+//! evaluation beside it, the `f64` determinant alone (no error bound), so
+//! the sign is decided once, by the exact ladder.
 
 use crate::sign::Sign;
 use glam::{DVec2, DVec3};
@@ -236,7 +238,9 @@ pub fn insphere<T: Into<f64>>(
 }
 
 /// Shewchuk's stage A of `insphere`, in robust's order of operations, so
-/// that a value robust certifies is returned to the bit.
+/// that a value robust certifies is returned to the bit. The crate's own
+/// filter computes the same expression today, but it is free to change its
+/// order (or its formula) for speed; this one is pinned to robust's.
 #[inline(always)]
 fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> f64 {
     let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
@@ -264,14 +268,18 @@ fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> f64
 /// (the rule of the [module docs](self#the-returned-value)).
 #[inline(always)]
 fn with_exact_sign(exact: Sign, first_stage: f64) -> f64 {
-    // The comparisons are false for NaN, so a NaN first stage falls through
-    // to the sign-only value like an overflowed one.
-    match exact {
-        Sign::Zero => 0.0,
-        Sign::Positive if first_stage > 0.0 && first_stage < f64::INFINITY => first_stage,
-        Sign::Positive => f64::MIN_POSITIVE,
-        Sign::Negative if first_stage < 0.0 && first_stage > f64::NEG_INFINITY => first_stage,
-        Sign::Negative => -f64::MIN_POSITIVE,
+    // -1.0, 0.0 or 1.0: the product with a finite first stage is exact, and
+    // positive only where their signs agree (false for NaN). Written as one
+    // select rather than a match on the sign, which a random sign would
+    // mispredict on every other call.
+    let sign = f64::from(exact.as_i8());
+    let agrees = first_stage * sign > 0.0 && first_stage.abs() < f64::INFINITY;
+    // On disagreement `sign * MIN_POSITIVE` is the sign-only value, and
+    // `+0.0` for an exact zero.
+    if agrees {
+        first_stage
+    } else {
+        sign * f64::MIN_POSITIVE
     }
 }
 
