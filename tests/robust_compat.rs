@@ -11,6 +11,9 @@
 //!   is wrong (run with `--nocapture` to see the table); on explicit cases
 //!   near `1e-160`, `1e+160` and `1e-300` beside `1e+300`, `robust` is wrong
 //!   and the door is not.
+//! - A user's code (a convex hull written against `robust`) compiled on
+//!   both with only its `use` line changed: the same hull on ordinary
+//!   points, and only the door's is a hull where the products underflow.
 
 use exactray::predicates::robust_compat::{self, Coord, Coord3D};
 use exactray::testing::{
@@ -464,4 +467,93 @@ fn other_coordinate_types() {
     fn p(x: f64, y: f64) -> robust::Coord<f64> {
         robust::Coord { x, y }
     }
+}
+
+/// A convex hull (Andrew's monotone chain) written against `robust`'s
+/// interface, compiled twice: once on `robust` itself and once with its
+/// one `use` line swapped for the door. Nothing else differs.
+macro_rules! monotone_chain {
+    ($module:ident, $predicates:path) => {
+        mod $module {
+            use $predicates as robust;
+
+            /// The hull's vertices, counterclockwise, collinear points dropped.
+            pub fn hull(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
+                let mut sorted = points.to_vec();
+                sorted.sort_by(|p, q| p.partial_cmp(q).expect("finite points"));
+                sorted.dedup();
+                if sorted.len() < 3 {
+                    return sorted;
+                }
+                let c = |[x, y]: [f64; 2]| robust::Coord { x, y };
+                let turns_left = |h: &[[f64; 2]], p: [f64; 2]| {
+                    let n = h.len();
+                    robust::orient2d(c(h[n - 2]), c(h[n - 1]), c(p)) > 0.0
+                };
+                let mut lower: Vec<[f64; 2]> = Vec::new();
+                for &p in &sorted {
+                    while lower.len() >= 2 && !turns_left(&lower, p) {
+                        lower.pop();
+                    }
+                    lower.push(p);
+                }
+                let mut upper: Vec<[f64; 2]> = Vec::new();
+                for &p in sorted.iter().rev() {
+                    while upper.len() >= 2 && !turns_left(&upper, p) {
+                        upper.pop();
+                    }
+                    upper.push(p);
+                }
+                lower.pop();
+                upper.pop();
+                lower.extend(upper);
+                lower
+            }
+        }
+    };
+}
+
+monotone_chain!(hull_on_robust, robust);
+monotone_chain!(hull_on_door, exactray::predicates::robust_compat);
+
+/// Whether `hull` is a convex hull of `points`, decided exactly: every turn
+/// strictly counterclockwise and no point strictly outside an edge.
+fn is_convex_hull(hull: &[[f64; 2]], points: &[[f64; 2]]) -> bool {
+    let n = hull.len();
+    n >= 3
+        && (0..n).all(|i| {
+            let (a, b) = (hull[i], hull[(i + 1) % n]);
+            oracle::orient2d(a, b, hull[(i + 2) % n]) > 0
+                && points.iter().all(|&p| oracle::orient2d(a, b, p) >= 0)
+        })
+}
+
+/// The swap on a user's code: at ordinary magnitudes both copies build the
+/// same hull; scaled by `2^-540` (about `3e-163`), where the products
+/// underflow, only the door's is a convex hull of its points.
+#[test]
+fn a_hull_swapped_in_one_line() {
+    let mut rng = SplitMix64::new(160);
+    let disk: Vec<[f64; 2]> = (0..400)
+        .map(|_| [2.0 * rng.next_f64() - 1.0, 2.0 * rng.next_f64() - 1.0])
+        .filter(|[x, y]| x * x + y * y < 1.0)
+        .collect();
+    let ordinary = hull_on_door::hull(&disk);
+    assert!(is_convex_hull(&ordinary, &disk));
+    assert_eq!(ordinary, hull_on_robust::hull(&disk));
+
+    // Exact: no scaled coordinate is subnormal.
+    let scale = |p: &[f64; 2]| p.map(|x| x * 2f64.powi(-540));
+    let tiny: Vec<[f64; 2]> = disk.iter().map(scale).collect();
+    let theirs = hull_on_robust::hull(&tiny);
+    let ours = hull_on_door::hull(&tiny);
+    println!(
+        "hull at 2^-540: {} vertices on the door, {} on robust",
+        ours.len(),
+        theirs.len()
+    );
+    assert!(is_convex_hull(&ours, &tiny));
+    assert!(!is_convex_hull(&theirs, &tiny));
+    // The door's hull is the ordinary one, scaled.
+    assert_eq!(ours, ordinary.iter().map(scale).collect::<Vec<_>>());
 }
