@@ -23,6 +23,10 @@
 //!   `side_of_oriented_sphere`). Shewchuk's `insphere` assumes his opposite
 //!   orientation, so it equals `-sign(robust::insphere(a, b, c, d, e))`.
 //!
+//! Code written against the `robust` crate (Shewchuk's conventions, `f64`
+//! returns) can use [`robust_compat`] instead: the same interface on these
+//! exact signs, switched with one `use` line.
+//!
 //! # Non-finite input
 //! The plain functions never panic. On a NaN or infinite coordinate they
 //! return [`Sign::Zero`], which means "no answer" there; the `try_` variants
@@ -80,6 +84,7 @@ mod orient2d;
 pub(crate) mod orient3d;
 pub(crate) mod orient_dir;
 mod plane_side;
+pub mod robust_compat;
 mod sparse;
 
 use crate::error::InputError;
