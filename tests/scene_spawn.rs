@@ -12,48 +12,15 @@ use exactray::scene::{MeshHit, TriangleMesh, reflect, reflect_above, spawn_ray, 
 use exactray::testing::{SplitMix64, point_in_triangle, unit_vector};
 use glam::DVec3;
 
-/// A UV sphere of `rings` by `segments` quads (triangles at the poles),
-/// every triangle counterclockwise seen from outside, with the unit
-/// vertex normals of the exact sphere.
+/// [`exactray::testing::uv_sphere`] as its three parts.
 fn uv_sphere(
     center: DVec3,
     radius: f64,
     rings: u32,
     segments: u32,
 ) -> (Vec<DVec3>, Vec<[u32; 3]>, Vec<DVec3>) {
-    let mut normals = vec![DVec3::Z];
-    for i in 1..rings {
-        let theta = core::f64::consts::PI * i as f64 / rings as f64;
-        for j in 0..segments {
-            let phi = 2.0 * core::f64::consts::PI * j as f64 / segments as f64;
-            normals.push(DVec3::new(
-                theta.sin() * phi.cos(),
-                theta.sin() * phi.sin(),
-                theta.cos(),
-            ));
-        }
-    }
-    normals.push(-DVec3::Z);
-    let last = normals.len() as u32 - 1;
-    let at = |i: u32, j: u32| 1 + (i - 1) * segments + j % segments;
-    let mut triangles = Vec::new();
-    for j in 0..segments {
-        triangles.push([0, at(1, j), at(1, j + 1)]);
-        triangles.push([last, at(rings - 1, j + 1), at(rings - 1, j)]);
-        for i in 1..rings - 1 {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            triangles.extend([[a, b, c], [a, c, d]]);
-        }
-    }
-    let vertices: Vec<DVec3> = normals.iter().map(|n| center + *n * radius).collect();
-    // Counterclockwise from outside: flip any triangle facing inwards.
-    for t in &mut triangles {
-        let [a, b, c] = t.map(|i| vertices[i as usize]);
-        if (b - a).cross(c - a).dot(a + b + c - center * 3.0) < 0.0 {
-            t.swap(1, 2);
-        }
-    }
-    (vertices, triangles, normals)
+    let m = exactray::testing::uv_sphere(center, radius, rings, segments);
+    (m.vertices, m.triangles, m.normals)
 }
 
 /// A tilted planar grid of `n` by `n` cells of side `size` around

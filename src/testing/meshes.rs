@@ -345,6 +345,52 @@ pub fn cosine_direction(normal: DVec3, rng: &mut SplitMix64) -> DVec3 {
     a * x + b * y + normal * z
 }
 
+/// A UV sphere of `rings` by `segments` quads (triangles at the poles, on
+/// the `z` axis), every triangle counterclockwise seen from outside, with
+/// the unit vertex normals of the exact sphere: coarse ones show how far
+/// interpolated normals lean from the facets' (the exam's Q3). `rings` is
+/// taken as at least 2 and `segments` as at least 3.
+pub fn uv_sphere(center: DVec3, radius: f64, rings: u32, segments: u32) -> SceneMesh {
+    let (rings, segments) = (rings.max(2), segments.max(3));
+    let mut normals = vec![DVec3::Z];
+    for i in 1..rings {
+        let theta = PI * i as f64 / rings as f64;
+        for j in 0..segments {
+            let phi = 2.0 * PI * j as f64 / segments as f64;
+            normals.push(DVec3::new(
+                sin(theta) * cos(phi),
+                sin(theta) * sin(phi),
+                cos(theta),
+            ));
+        }
+    }
+    normals.push(-DVec3::Z);
+    let last = normals.len() as u32 - 1;
+    let at = |i: u32, j: u32| 1 + (i - 1) * segments + j % segments;
+    let mut triangles = Vec::new();
+    for j in 0..segments {
+        triangles.push([0, at(1, j), at(1, j + 1)]);
+        triangles.push([last, at(rings - 1, j + 1), at(rings - 1, j)]);
+        for i in 1..rings - 1 {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            triangles.extend([[a, b, c], [a, c, d]]);
+        }
+    }
+    let vertices: Vec<DVec3> = normals.iter().map(|n| center + *n * radius).collect();
+    // Counterclockwise from outside: flip any triangle facing inwards.
+    for t in &mut triangles {
+        let [a, b, c] = t.map(|i| vertices[i as usize]);
+        if (b - a).cross(c - a).dot(a + b + c - center * 3.0) < 0.0 {
+            t.swap(1, 2);
+        }
+    }
+    SceneMesh {
+        vertices,
+        triangles,
+        normals,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -13,6 +13,7 @@
 use crate::camera::Camera;
 use exactray::scene::{PrimitiveId, Scene, SceneBuilder, TriangleMesh};
 use exactray::shape::{CappedCylinder, Sphere};
+use exactray::testing::{SceneMesh, uv_sphere};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -163,45 +164,6 @@ fn quad(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> TriangleMesh {
     TriangleMesh::new(&[a, b, c, d], &[[0, 1, 2], [0, 2, 3]]).expect("finite quad")
 }
 
-/// A UV sphere of `rings` x `segments` quads (poles as fans), with its
-/// exact unit normals at the vertices: coarse, so that interpolated normals
-/// differ visibly from the facets'.
-pub fn uv_sphere(
-    centre: DVec3,
-    radius: f64,
-    rings: u32,
-    segments: u32,
-) -> (Vec<DVec3>, Vec<[u32; 3]>, Vec<DVec3>) {
-    let (rings, segments) = (rings.max(2), segments.max(3));
-    let mut normals = vec![DVec3::Y];
-    for i in 1..rings {
-        let theta = PI * i as f64 / rings as f64;
-        for j in 0..segments {
-            let phi = 2.0 * PI * j as f64 / segments as f64;
-            normals.push(DVec3::new(
-                theta.sin() * phi.cos(),
-                theta.cos(),
-                -theta.sin() * phi.sin(),
-            ));
-        }
-    }
-    normals.push(-DVec3::Y);
-    let vertices = normals.iter().map(|n| centre + *n * radius).collect();
-    let at = |i: u32, j: u32| 1 + (i - 1) * segments + j % segments;
-    let last = 1 + (rings - 1) * segments;
-    let mut triangles = Vec::new();
-    for j in 0..segments {
-        triangles.push([0, at(1, j), at(1, j + 1)]);
-        triangles.push([last, at(rings - 1, j + 1), at(rings - 1, j)]);
-        for i in 1..rings - 1 {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            triangles.push([a, b, c]);
-            triangles.push([a, c, d]);
-        }
-    }
-    (vertices, triangles, normals)
-}
-
 /// A capped cylinder's tessellation, for the Z-buffer's picture.
 fn cylinder_mesh(
     base: DVec3,
@@ -302,7 +264,11 @@ pub fn cornell_room(width: u32, height: u32) -> Room {
         emission: DVec3::splat(17.0),
     };
     let light_id = add_mesh(&mut builder, light_quad, light_material);
-    let (vertices, triangles, normals) = uv_sphere(v(0.42, 0.36, 0.38), 0.34, 4, 7);
+    let SceneMesh {
+        vertices,
+        triangles,
+        normals,
+    } = uv_sphere(v(0.42, 0.36, 0.38), 0.34, 4, 7);
     let smooth = TriangleMesh::new(&vertices, &triangles)
         .and_then(|m| m.with_normals(&normals))
         .expect("finite sphere");
@@ -314,7 +280,11 @@ pub fn cornell_room(width: u32, height: u32) -> Room {
     let sphere_id = builder.add(sphere).expect("few primitives");
     occluders.add(sphere).expect("few primitives");
     materials.push(Material::mirror(DVec3::splat(0.95)));
-    let (vertices, triangles, normals) = uv_sphere(centre, radius, 24, 48);
+    let SceneMesh {
+        vertices,
+        triangles,
+        normals,
+    } = uv_sphere(centre, radius, 24, 48);
     raster.push(RasterMesh {
         primitive: sphere_id,
         vertices,
