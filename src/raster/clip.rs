@@ -220,6 +220,13 @@ pub fn clip_triangle(
         if polygon.is_empty() {
             break;
         }
+        // A plane every vertex is inside leaves the polygon as it is (the
+        // pass would push each vertex and cut nothing): skip the copy. Most
+        // triangles of a frame are inside every plane.
+        let inside = |v: &ClipVertex| plane.distance(v.position) >= 0.0;
+        if polygon.vertices().iter().all(inside) {
+            continue;
+        }
         polygon = clip_polygon(&polygon, plane);
     }
     Ok(polygon)
