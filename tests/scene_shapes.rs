@@ -446,8 +446,21 @@ mod strategies {
             for _ in 0..8 {
                 if let Some(ray) = scene_ray(&mut rng, &scene) {
                     let next = scene.closest_hit(&ray, Interval::FORWARD);
-                    prop_assert_eq!(next, brute::<Watertight>(&scene, &ray, Interval::FORWARD));
-                    prop_assert_eq!(scene.occluded(&ray, Interval::FORWARD), next.is_some());
+                    let want = brute::<Watertight>(&scene, &ray, Interval::FORWARD);
+                    // The one documented exception random scenes reach
+                    // (`Scene`'s docs, "Culling"): the loop's winner is a
+                    // cone's lateral hit whose bracket failed (error
+                    // infinite), which the scene's box test need not keep
+                    // or order as the loop does.
+                    let uncertified = want.is_some_and(|w| !w.hit.error.is_finite())
+                        && want.is_some_and(|w| matches!(
+                            scene.primitive(w.primitive),
+                            Some(Primitive::Shape(AnalyticShape::Cone(_)))
+                        ));
+                    if !uncertified {
+                        prop_assert_eq!(next, want);
+                        prop_assert_eq!(scene.occluded(&ray, Interval::FORWARD), next.is_some());
+                    }
                 }
             }
         }
