@@ -51,7 +51,9 @@ impl EmbreeScene {
         let mut ctx = IntersectContext::coherent();
         let mut hit = RayHit::new(Ray::segment(v3(o), v3(d), 0.0, tmax as f32));
         self.scene.intersect(&mut ctx, &mut hit);
-        hit.hit.hit().then_some((hit.hit.primID, hit.ray.tfar as f64))
+        hit.hit
+            .hit()
+            .then_some((hit.hit.primID, hit.ray.tfar as f64))
     }
 
     /// Whether the ray meets the mesh for `t` in `[0, tmax]`.
