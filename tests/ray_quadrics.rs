@@ -12,8 +12,8 @@ use exactray::query::ray::RayCast;
 use exactray::roots::Roots;
 use exactray::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
 use exactray::testing::{
-    CylinderRayClass, QuadricRayClass, SphereRayClass, SplitMix64, cylinder_ray_case,
-    quadric_ray_case, sphere_ray_case,
+    ConeRayClass, CylinderRayClass, QuadricRayClass, SphereRayClass, SplitMix64, cone_ray_case,
+    cylinder_ray_case, quadric_ray_case, sphere_ray_case,
 };
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use proptest::prelude::*;
@@ -271,18 +271,52 @@ proptest! {
     }
 
     #[test]
-    fn cone_counts_mostly_right(o in vec3(3.0), d in vec3(2.0), a in vec3(2.0), r in 0.1..2.0) {
-        // The cone is documented as not exact; on ordinary rays it agrees.
-        prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
-        let cone = Cone::infinite([0.0; 3], a, r).unwrap();
-        let ray = Ray::new(o, d).unwrap();
-        let want = Quadratic::cone(o, d, [0.0; 3], a, r).answer();
-        let got = cone.line_roots(&ray);
-        if want.count == Some(2) && got.count() == Some(2) {
-            let Roots::Two(t0, t1) = got else { unreachable!() };
-            prop_assert!(ulps_between(t0, want.roots[0]) < 1 << 20 && ulps_between(t1, want.roots[1]) < 1 << 20);
-        }
+    fn cone_ordinary(o in vec3(3.0), d in vec3(2.0), p in vec3(1.0), a in vec3(2.0), r in 0.1..2.0) {
+        cone_case(o, d, p, a, r)?;
     }
+
+    /// Small integers: rays through the apex (a double root), along a
+    /// ruling (every t) or parallel to one (degree one), and tangent
+    /// planes' lines, all decided exactly.
+    #[test]
+    fn cone_small_integers(o in int3(), d in int3(), p in int3(), a in int3(), r in 1..4i32) {
+        cone_case(o, d, p, a, f64::from(r))?;
+    }
+
+    /// The same at powers of two from `2^-600` to `2^600`, each group (the
+    /// points, the direction, the axis and radius) at its own.
+    #[test]
+    fn cone_small_integers_scaled(
+        o in int3(), d in int3(), p in int3(), a in int3(), r in 1..4i32,
+        (s, sd, sa) in (-600..600i32, -600..600i32, -600..600i32),
+    ) {
+        let at = |v: [f64; 3], k: i32| v.map(|x| x * 2f64.powi(k));
+        cone_case(at(o, s), at(d, sd), at(p, s), at(a, sa), f64::from(r) * 2f64.powi(sa))?;
+    }
+}
+
+fn int3() -> impl Strategy<Value = [f64; 3]> {
+    proptest::array::uniform3(-3..=3i32).prop_map(|v| v.map(f64::from))
+}
+
+/// The double cone's line roots against the exact oracle: count exact,
+/// roots within [`ULPS`].
+fn cone_case(
+    o: [f64; 3],
+    d: [f64; 3],
+    p: [f64; 3],
+    a: [f64; 3],
+    r: f64,
+) -> Result<(), TestCaseError> {
+    prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
+    let cone = Cone::infinite(p, a, r).unwrap();
+    let ray = Ray::new(o, d).unwrap();
+    let want = Quadratic::cone(o, d, p, a, r).answer();
+    check(
+        cone.line_roots(&ray),
+        &want,
+        &format!("cone {o:?} {d:?} {p:?} {a:?} {r}"),
+    )
 }
 
 /// A case check outside proptest: a failure panics, a rejected case (a
@@ -318,6 +352,11 @@ fn seeded_hard_rays() {
         for class in QuadricRayClass::ALL {
             let c = quadric_ray_case(class, &mut rng);
             must_pass(quadric_case(c.origin, c.direction, c.coefficients));
+        }
+        for class in ConeRayClass::ALL {
+            let c = cone_ray_case(class, &mut rng);
+            let (apex, axis) = (c.apex().to_array(), c.axis().to_array());
+            must_pass(cone_case(c.origin, c.direction, apex, axis, c.radius));
         }
     }
 }

@@ -1,4 +1,4 @@
-//! Rays against spheres, cylinders and general quadrics, on every finite
+//! Rays against spheres, cylinders, double cones and general quadrics, on every finite
 //! input, checked against the exact line oracle: the root count must be
 //! exact always, and every root whose correctly rounded value lies in the
 //! normal range within 5 ulps of it (4 where the fast stage certifies it;
@@ -11,7 +11,7 @@ use exactray::interval::Interval;
 use exactray::query::ray::Ray;
 use exactray::query::ray::RayCast;
 use exactray::roots::Roots;
-use exactray::shape::{Cylinder, Quadric, Sphere};
+use exactray::shape::{Cone, Cylinder, Quadric, Sphere};
 use exactray::testing::finite_f64_from_bits;
 use exactray_oracle::line_oracle::{Quadratic, ulps_between};
 use libfuzzer_sys::fuzz_target;
@@ -29,7 +29,7 @@ fuzz_target!(|input: (u8, [u64; 16])| {
     let d = [v[3], v[4], v[5]];
     let Ok(ray) = Ray::new(o, d) else { return };
     let forward = Interval::FORWARD;
-    let (got, first, want) = match mode % 3 {
+    let (got, first, want) = match mode % 4 {
         0 => {
             let (c, r) = ([v[6], v[7], v[8]], v[9].abs());
             let s = Sphere::new(c, r).expect("finite sphere");
@@ -47,6 +47,18 @@ fuzz_target!(|input: (u8, [u64; 16])| {
                 first,
                 Quadratic::cylinder(o, d, p, a, r),
             )
+        }
+        2 => {
+            // The double cone: `cast_t` keeps one nappe, so the first
+            // admitted root of both is not its answer; `line_roots` is
+            // checked, and `cast_t` must not panic.
+            let (p, a, r) = ([v[6], v[7], v[8]], [v[9], v[10], v[11]], v[12].abs());
+            let Ok(cone) = Cone::infinite(p, a, r) else {
+                return;
+            };
+            let _ = cone.cast_t(&ray, forward);
+            let roots = cone.line_roots(&ray);
+            (roots, None, Quadratic::cone(o, d, p, a, r))
         }
         _ => {
             let k: [f64; 10] = core::array::from_fn(|i| v[6 + i]);

@@ -296,6 +296,18 @@ impl<const N: usize> FixedInt<N> {
     }
 }
 
+/// `x x y`, exactly, for `N2` limbs that hold a sum of two products of
+/// `N1`-limb values.
+pub(crate) fn cross3<const N1: usize, const N2: usize>(
+    x: &[FixedInt<N1>; 3],
+    y: &[FixedInt<N1>; 3],
+) -> [FixedInt<N2>; 3] {
+    core::array::from_fn(|k| {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        FixedInt::<N2>::mul(&x[i], &y[j]).sub(&FixedInt::mul(&x[j], &y[i]))
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -294,7 +294,7 @@ fn radius(t: f64) -> f64 {
 /// whether it has one in `[t - r, t + r]`, `r = radius(t)`.
 ///
 /// By the mean value theorem: on the interval `|p'(s)| = 2 |A s + B| >=
-/// 2 (|A t + B| - A r) =: m`; where `m > 0` and `|p(t)| < m r`, `p` is
+/// 2 (|A t + B| - |A| r) =: m`; where `m > 0` and `|p(t)| < m r`, `p` is
 /// monotone there and moves by more than `|p(t)|` on either side of `t`,
 /// so it changes sign. `A t + B` is computed as `g` within
 /// `e_a |t| + e_b` (the coefficients' errors) plus two roundings.
@@ -303,7 +303,7 @@ fn root_within(k: &Coeffs, t: f64, r: f64, (v, e): (f64, f64)) -> bool {
     let at = k.a * t;
     let g = at + k.b;
     let e_g = (k.e_a * t.abs() + k.e_b + U * (at.abs() + g.abs())) * (1.0 + 8.0 * U) + ETA;
-    let half_m = (g.abs() - e_g - (k.a + k.e_a) * r) * (1.0 - 4.0 * U);
+    let half_m = (g.abs() - e_g - (k.a.abs() + k.e_a) * r) * (1.0 - 4.0 * U);
     // NaN anywhere fails the comparisons.
     half_m > 0.0 && (v.abs() + e) * (1.0 + 64.0 * U) < 2.0 * half_m * r * (1.0 - 4.0 * U)
 }

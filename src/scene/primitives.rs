@@ -256,8 +256,7 @@ impl SceneBuilder {
 /// base's plane parameter where the numerator cancels (an origin within
 /// rounding of the disk's plane) and the crossing lies within that error
 /// of the box's face; a rim decided in `f64` within a few ulps of where it
-/// touches its box; a cone's lateral hit whose bracket failed (its
-/// [`Hit::error`] infinite).
+/// touches its box.
 ///
 /// ```
 /// use exactray::prelude::*;

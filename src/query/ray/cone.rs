@@ -1,149 +1,100 @@
-//! Ray against [`Cone`].
+//! Ray against [`Cone`]: exact root count, accurate roots.
 
-use super::point_error::{dot_error, quotient_t_error};
+use super::point_error::{dot_error, quotient_t_error, root_t_error};
 use super::{Hit, RayCast, unit_or};
-use crate::arith::exponent::{pow2, scale_pow2, unit_scale};
+use crate::arith::error_free::exact_difference;
+use crate::arith::exponent::{Grain, pow2, scale_pow2, unit_scale};
+use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3, limbs_of_degree};
+use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::{U, gamma};
+use crate::arith::std_or_libm::fma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::{Roots, solve_quadratic};
+use crate::roots::Roots;
+use crate::roots::certified::{
+    AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
+};
 use crate::shape::Cone;
 use glam::DVec3;
+
+/// Limbs at the common grains: an input or a difference of two (below
+/// `2^2100`), then degrees 2, 4, 6 and 12.
+const W1: usize = DEG1;
+const W2: usize = DEG2;
+const W4: usize = DEG4;
+const W6: usize = limbs_of_degree(6);
+/// A product of two degree-6 values takes the limbs of both.
+const W12: usize = 2 * W6;
 
 impl Cone {
     /// Every real root of the double cone's equation
     /// `|w x a|^2 |a|^2 = r^2 (w . a)^2`, `w = o + t d - apex`, over the whole
     /// line, sorted (both nappes; [`RayCast::cast`] keeps the cone's own).
     ///
-    /// The coefficients are evaluated in `f64` and solved by
-    /// [`solve_quadratic`]: unlike the sphere and the cylinder, the count is
-    /// not exact (the discriminant has degree 12 in the inputs), and the
-    /// roots carry the coefficients' rounding errors (about `10 u` relative
-    /// each, amplified where they cancel) on top of the solver's 4 ulps.
-    /// The report measures the error against an exact oracle.
+    /// The count is exact: a line through the apex (off the cone's
+    /// rulings) gives its double root [`Roots::One`], a line parallel to a
+    /// ruling (the leading coefficient zero) its one linear root or none,
+    /// and a ruling [`Roots::All`]. Roots carry the accuracy of
+    /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots): within 4
+    /// ulps of the correctly rounded root where the filtered stage
+    /// certifies them, correctly rounded from the exact stage, for roots in
+    /// the normal range.
+    ///
+    /// The discriminant has degree 12 in the inputs. The filtered stage
+    /// evaluates the polynomial's coefficients with the ray and the cone at
+    /// their own powers of two ([`ScaledLine`]), bounds their errors
+    /// a priori and certifies each root a posteriori, as the quadrics do
+    /// ([`crate::roots::certified`]); where it cannot (near-tangent rays,
+    /// rays through or near the apex, lines near a ruling's direction,
+    /// inputs whose scaling is not exact), the exact stage decides the
+    /// count from the coefficients as integers.
+    pub fn line_roots(&self, ray: &Ray) -> Roots {
+        let (o, d) = (ray.origin(), ray.direction());
+        let filtered = self.scaled(ray).and_then(|line| {
+            let roots = with_fma(&Filtered { line: &line })?;
+            let back = |tau: f64| scale_pow2(tau, line.back);
+            Some(match roots {
+                Roots::One(t) => Roots::One(back(t)),
+                Roots::Two(t1, t2) => Roots::Two(back(t1), back(t2)),
+                other => other,
+            })
+        });
+        filtered.unwrap_or_else(|| exact(o, d, self.apex, self.axis, self.radius))
+    }
+
+    /// The ray and the cone at their own powers of two, or `None` where a
+    /// scaling would not be exact (a component leaving the normal range).
     ///
     /// The polynomial `|a|^2 |(w + t d) x a|^2 - r^2 ((w + t d) . a)^2`
-    /// (`w = o - apex`) has degree six in lengths, so it is evaluated at
-    /// three powers of two: `w` scaled by `2^kw`, `d` by `2^kd` and the
-    /// pair `(a, r)` by `2^ka`, each brought near 1. The polynomial is
+    /// (`w = o - apex`) has degree six in lengths, so it is evaluated with
+    /// `w` scaled by `2^kw`, `d` by `2^kd` and the pair `(a, r)` by
+    /// `2^ka`, each brought to a largest magnitude in `[1/2, 1)`. It is
     /// homogeneous in each (of degree 4 in `(a, r)` jointly), so its roots
-    /// in `tau = t 2^(kw - kd)` are those of the unscaled one, and every
-    /// rounding is the same wherever the unscaled terms were normal; only
-    /// the range over which nothing underflows or overflows grows: each
-    /// group may sit anywhere in `f64`'s range (before, everything beyond
-    /// about `1e±51` under- or overflowed), and only terms of widely different
-    /// magnitudes within one group can still underflow.
-    /// The roots are scaled back exactly (unless they leave the range).
-    pub fn line_roots(&self, ray: &Ray) -> Roots {
-        let line = self.scaled(ray);
-        let [qa, qb, qc] = line.coefficients();
-        let back = |tau: f64| scale_pow2(tau, line.back);
-        match solve_quadratic(qa, 2.0 * qb, qc) {
-            Roots::One(t) => Roots::One(back(t)),
-            Roots::Two(t1, t2) => Roots::Two(back(t1), back(t2)),
-            other => other,
-        }
-    }
-
-    /// The ray and the cone at their own powers of two (see
-    /// [`line_roots`](Self::line_roots)).
-    fn scaled(&self, ray: &Ray) -> ScaledLine {
+    /// in `tau = t 2^(kw - kd)` are those of the unscaled one scaled
+    /// exactly, and nothing overflows wherever in `f64`'s range each group
+    /// sits.
+    fn scaled(&self, ray: &Ray) -> Option<ScaledLine> {
         let unit = |v: &[f64]| unit_scale(v).clamp(-1000, 1000);
-        let (w, d, a) = (ray.origin() - self.apex, ray.direction(), self.axis);
-        let (kw, kd) = (unit(&[w.x, w.y, w.z]), unit(&[d.x, d.y, d.z]));
+        let (wh, wl) = exact_difference(ray.origin(), self.apex);
+        let (d, a) = (ray.direction(), self.axis);
+        let (kw, kd) = (unit(&[wh.x, wh.y, wh.z]), unit(&[d.x, d.y, d.z]));
         let ka = unit(&[a.x, a.y, a.z, self.radius]);
-        ScaledLine {
-            w: w * pow2(kw),
-            d: d * pow2(kd),
-            a: a * pow2(ka),
-            r: self.radius * pow2(ka),
+        let (fw, fd, fa) = (pow2(kw), pow2(kd), pow2(ka));
+        let exact = |v: DVec3, f: f64, k: i32| (v * f) * pow2(-k) == v;
+        let r = self.radius * fa;
+        let all_exact = exact(wh, fw, kw)
+            && exact(wl, fw, kw)
+            && exact(d, fd, kd)
+            && exact(a, fa, ka)
+            && r * pow2(-ka) == self.radius;
+        all_exact.then(|| ScaledLine {
+            wh: wh * fw,
+            wl: wl * fw,
+            d: d * fd,
+            a: a * fa,
+            r,
             back: kd - kw,
-        }
-    }
-
-    /// A bound on the distance from a lateral root `t` (of the computed
-    /// quadratic) to a root of the exact polynomial, by an a-posteriori
-    /// bracket: the exact polynomial's sign is certified at `t - r` and
-    /// `t + r` and found opposite, so exactly one exact root lies between
-    /// them. Infinite where the certificate fails (near-tangent rays, where
-    /// two roots are close; and, of the scaled inputs, which lie below 1,
-    /// none whose magnitudes the bounds below do not cover).
-    ///
-    /// Each coefficient is a polynomial in the exact inputs; computed with
-    /// at most `k` roundings on any term's path (`w` 1, `u = w x a` 3,
-    /// `v = d x a` 2, `p = w . a` 4, `q = d . a` 3, `s = a . a` 3; `qa` 10,
-    /// `qb` 13, `qc` 14), it is within `gamma(k)` of the same expression
-    /// over the terms' magnitudes (Higham, §3.1). The magnitudes are
-    /// themselves rounded (`k` more times), hence `gamma(2k)` of the
-    /// computed ones. A product that underflows loses at most `2^-1075`,
-    /// scaled by later factors below `2^300`: an absolute `SLACK` (below
-    /// `2^-697`) covers them.
-    ///
-    /// The bracket is found on the scaled polynomial in `tau = t
-    /// 2^-back` ([`line_roots`](Self::line_roots)), whose exact roots are
-    /// the exact `t`'s scaled exactly, and its half-width scaled back, plus
-    /// `2^-1073` for the two roundings `scale_pow2` may make there; a `t`
-    /// that does not scale exactly gets no bound.
-    fn lateral_t_error(&self, ray: &Ray, t: f64) -> f64 {
-        let line = self.scaled(ray);
-        let tau = scale_pow2(t, -line.back);
-        if scale_pow2(tau, line.back) != t {
-            return f64::INFINITY;
-        }
-        scale_pow2(Self::bracket(&line, tau), line.back) + f64::from_bits(2)
-    }
-
-    /// [`lateral_t_error`](Self::lateral_t_error) on the scaled line.
-    fn bracket(line: &ScaledLine, t: f64) -> f64 {
-        let (w, d, a, r) = (line.w, line.d, line.a, line.r);
-        let limit = pow2(150);
-        let within = |v: DVec3| v.abs().max_element() < limit;
-        if !(within(w) && within(d) && within(a) && r < limit) {
-            return f64::INFINITY;
-        }
-        let (s, rr) = (a.dot(a), r * r);
-        let k = line.coefficients();
-        let abs_cross = |x: DVec3, y: DVec3| {
-            let (x, y) = (x.abs(), y.abs());
-            DVec3::new(
-                x.y * y.z + x.z * y.y,
-                x.z * y.x + x.x * y.z,
-                x.x * y.y + x.y * y.x,
-            )
-        };
-        let (um, vm) = (abs_cross(w, a), abs_cross(d, a));
-        let (pm, qm) = (w.abs().dot(a.abs()), d.abs().dot(a.abs()));
-        const SLACK: f64 = 1.0e-210;
-        let e = [
-            gamma(20) * (s * vm.dot(vm) + rr * qm * qm) + SLACK,
-            gamma(26) * (s * um.dot(vm) + rr * pm * qm) + SLACK,
-            gamma(28) * (s * um.dot(um) + rr * pm * pm) + SLACK,
-        ];
-        // p(x) = (qa x + 2 qb) x + qc: Horner's roundings on the computed
-        // coefficients (gamma(5) of the terms' magnitudes, the doubling
-        // exact), and the coefficients' own errors, all with a margin.
-        let value = |x: f64| (k[0] * x + 2.0 * k[1]) * x + k[2];
-        let bound = |x: f64| {
-            let x2 = x * x;
-            (gamma(5) * (k[0].abs() * x2 + 2.0 * (k[1] * x).abs() + k[2].abs())
-                + e[0] * x2
-                + 2.0 * e[1] * x.abs()
-                + e[2])
-                * (1.0 + gamma(4))
-                + SLACK
-        };
-        let slope = 2.0 * (k[0] * t + k[1]);
-        let mut radius = 4.0 * bound(t) / slope.abs() + gamma(4) * t.abs();
-        for _ in 0..2 {
-            let (lo, hi) = ((t - radius).next_down(), (t + radius).next_up());
-            let (vl, vh) = (value(lo), value(hi));
-            if vl.abs() > bound(lo) && vh.abs() > bound(hi) && (vl < 0.0) != (vh < 0.0) {
-                // The exact root lies in (lo, hi).
-                return (t - lo).max(hi - t) * (1.0 + gamma(2));
-            }
-            radius *= 16.0;
-        }
-        f64::INFINITY
+        })
     }
 
     /// The outward normal of the lateral surface at `x`: the gradient of
@@ -151,8 +102,8 @@ impl Cone {
     ///
     /// The gradient has degree one in `w = x - apex` and four in `(a, r)`
     /// jointly, so its direction is computed with `w` and `(a, r)` each
-    /// scaled by a power of two near 1 (as in [`line_roots`](Self::line_roots)),
-    /// which keeps its fifth powers in range.
+    /// scaled by a power of two near 1 (as in [`Cone::scaled`]), which
+    /// keeps its fifth powers in range.
     fn normal_at(&self, x: DVec3, fallback: DVec3) -> DVec3 {
         let w = x - self.apex;
         let w = w * pow2(unit_scale(&[w.x, w.y, w.z]).clamp(-1000, 1000));
@@ -164,30 +115,250 @@ impl Cone {
     }
 }
 
-/// A ray and a cone with `w = o - apex`, `d` and the pair `(a, r)` each
-/// scaled by a power of two near 1; `t = tau 2^back` for the scaled
+/// A ray and a cone with `w = o - apex = wh + wl` (exactly), `d` and the
+/// pair `(a, r)` each scaled exactly by a power of two that brings its
+/// largest magnitude into `[1/2, 1)`; `t = tau 2^back` for the scaled
 /// polynomial's roots `tau`.
 struct ScaledLine {
-    w: DVec3,
+    wh: DVec3,
+    wl: DVec3,
     d: DVec3,
     a: DVec3,
     r: f64,
     back: i32,
 }
 
+/// The filtered stage, run with hardware FMA where the CPU has it.
+struct Filtered<'a> {
+    line: &'a ScaledLine,
+}
+
+impl FmaKernel for Filtered<'_> {
+    type Output = Option<Roots>;
+
+    #[inline(always)]
+    fn run(&self) -> Option<Roots> {
+        let line = self.line;
+        let k = line.coeffs()?;
+        AllRoots.answer(&k, &Lateral::of(line))
+    }
+}
+
+/// `|x_j y_k| + |x_k y_j|` per component: the magnitudes of `x x y`'s
+/// terms.
+#[inline(always)]
+fn abs_cross(x: DVec3, y: DVec3) -> DVec3 {
+    let (x, y) = (x.abs(), y.abs());
+    DVec3::new(
+        x.y * y.z + x.z * y.y,
+        x.z * y.x + x.x * y.z,
+        x.x * y.y + x.y * y.x,
+    )
+}
+
 impl ScaledLine {
-    /// The lateral quadratic `qa tau^2 + 2 qb tau + qc` of the scaled line.
-    fn coefficients(&self) -> [f64; 3] {
-        let (w, d, a) = (self.w, self.d, self.a);
+    /// The lateral quadratic's half-form coefficients `A tau^2 + 2 B tau +
+    /// C` from `wh` (`w` rounded once), with error bounds; `None` where the
+    /// terms' magnitudes leave the filter's range.
+    ///
+    /// Each coefficient is a polynomial in the exact inputs; computed with
+    /// at most `k` roundings on any term's path (`w` 1, `u = w x a` 3,
+    /// `v = d x a` 2, `p = w . a` 4, `q = d . a` 3, `s = a . a` 3; `A`
+    /// at most 10, `B` 13, `C` 14, counted with room to spare), it is
+    /// within `gamma(k)` of the same expression over the terms'
+    /// magnitudes (Higham, *Accuracy and Stability*, §3.1). The magnitudes
+    /// are themselves rounded (`k` more times), hence `gamma(2k)` of the
+    /// computed ones. Every scaled input lies below 1, so a product that
+    /// underflows loses at most `2^-1075` and later factors do not grow it:
+    /// `ETA` (`2^-500`) per coefficient covers them.
+    ///
+    /// The discriminant `B^2 - A C` rounds twice (`B^2`, then the fma);
+    /// the coefficients' errors propagate through the products, to second
+    /// order included (`e_b^2`, `e_a e_c`: where `B` is near zero they are
+    /// the whole bound).
+    #[inline(always)]
+    fn coeffs(&self) -> Option<Coeffs> {
+        let (w, d, a) = (self.wh, self.d, self.a);
         let (s, rr) = (a.dot(a), self.r * self.r);
         let (u, v) = (w.cross(a), d.cross(a));
         let (p, q) = (w.dot(a), d.dot(a));
-        [
-            s * v.dot(v) - rr * q * q,
-            s * u.dot(v) - rr * p * q,
-            s * u.dot(u) - rr * p * p,
-        ]
+        let (um, vm) = (abs_cross(w, a), abs_cross(d, a));
+        let (pm, qm) = (w.abs().dot(a.abs()), d.abs().dot(a.abs()));
+        let (ma, mb, mc) = (
+            s * vm.dot(vm) + rr * qm * qm,
+            s * um.dot(vm) + rr * pm * qm,
+            s * um.dot(um) + rr * pm * pm,
+        );
+        if !(in_filter_range(ma) && in_filter_range(mc)) {
+            return None;
+        }
+        let a_ = s * v.dot(v) - rr * q * q;
+        let b = s * u.dot(v) - rr * p * q;
+        let c = s * u.dot(u) - rr * p * p;
+        let (e_a, e_b, e_c) = (
+            gamma(20) * ma + ETA,
+            gamma(26) * mb + ETA,
+            gamma(28) * mc + ETA,
+        );
+        let disc = fma(-a_, c, b * b);
+        let e_disc = 2.0 * b.abs() * e_b
+            + a_.abs() * e_c
+            + c.abs() * e_a
+            + e_b * e_b
+            + e_a * e_c
+            + U * b * b
+            + U * disc.abs();
+        Some(Coeffs {
+            a: a_,
+            e_a,
+            b,
+            e_b,
+            c,
+            disc,
+            e_disc,
+        })
     }
+}
+
+/// The cone's exact polynomial along the scaled line, `P(x) = s |x x a|^2
+/// - r^2 (x . a)^2` at `x = w + tau d`.
+struct Lateral {
+    wh: DVec3,
+    wl: DVec3,
+    d: DVec3,
+    a: DVec3,
+    s: f64,
+    rr: f64,
+}
+
+impl Lateral {
+    #[inline(always)]
+    fn of(line: &ScaledLine) -> Lateral {
+        Lateral {
+            wh: line.wh,
+            wl: line.wl,
+            d: line.d,
+            a: line.a,
+            s: line.a.dot(line.a),
+            rr: line.r * line.r,
+        }
+    }
+}
+
+impl Polynomial for Lateral {
+    /// One evaluation serves both: its bound is relative to the point near
+    /// the surface, not to `|w|`, so there is no cheaper one worth trying.
+    const TRY_FAST: bool = false;
+
+    #[inline(always)]
+    fn eval_fast(&self, t: f64) -> (f64, f64) {
+        self.eval_precise(t)
+    }
+
+    /// `P(x)` at the computed `x`, with a rigorous bound on its distance
+    /// from `P` at the exact `w + tau d`.
+    ///
+    /// `x_i = fl(fl(fma(tau, d_i, wh_i)) + wl_i)` rounds twice, so it is
+    /// within `ex_i = u (|f_i| + |x_i|)` (and `2^-1075` for an underflow)
+    /// of the exact point. `P` is a quadratic form in `x`, so with `x` off
+    /// by `δ`, `P(x + δ) - P(x) = ∇P(x) . δ + P(δ)`, with `∇P = 2 s (s x -
+    /// h a) - 2 r^2 h a` (`h = x . a`, from `|x x a|^2 = |x|^2 s - h^2`),
+    /// bounded by the magnitudes, and `|P(δ)| <= s (s + r^2) |δ|^2`. `P` at
+    /// the computed `x` takes at most 7 roundings on any term's path
+    /// (`x x a` 2, its square and sum 5, times `s` 6; `h` 3, times `r^2`
+    /// and `h` 5; the difference 7): `gamma(7)` of its terms' magnitudes
+    /// (Higham §3.1). The bound's own roundings (sums and products of
+    /// nonnegative values, at most 10 on a path) take `1 + gamma(10)`.
+    /// With `|x|` below `2^300` and every other factor below 3, an
+    /// underflow loses at most `2^-770` from any term: `16 ETA` covers
+    /// them; beyond `2^300` the bound is infinite.
+    #[inline(always)]
+    fn eval_precise(&self, t: f64) -> (f64, f64) {
+        let (a, s, rr) = (self.a, self.s, self.rr);
+        let f = DVec3::new(
+            fma(t, self.d.x, self.wh.x),
+            fma(t, self.d.y, self.wh.y),
+            fma(t, self.d.z, self.wh.z),
+        );
+        let x = f + self.wl;
+        let xm = x.abs();
+        if !xm.is_finite() || xm.max_element() >= pow2(300) {
+            return (0.0, f64::INFINITY);
+        }
+        let ex = (f.abs() + xm) * U + DVec3::splat(2.0 * ETA);
+        let (y, h) = (x.cross(a), x.dot(a));
+        let value = s * y.dot(y) - rr * h * h;
+        let (am, ym, hm) = (a.abs(), abs_cross(x, a), xm.dot(a.abs()));
+        let terms = s * ym.dot(ym) + rr * hm * hm;
+        let grad = (xm * (s * s) + am * ((s + rr) * hm)) * 2.0;
+        let propagated = grad.dot(ex) + s * (s + rr) * ex.dot(ex);
+        let e = (gamma(7) * terms + propagated) * (1.0 + gamma(10)) + 16.0 * ETA;
+        (value, e)
+    }
+}
+
+/// The exact stage at three grains (`o, apex`: `lo`; `d`: `ld`; `a, r`:
+/// `la`), under which the equation keeps its roots: `A = s |v|^2 - r^2
+/// q^2` at `2 ld + 4 la`, `B = s (u . v) - r^2 p q` at `lo + ld + 4 la`,
+/// `C = s |u|^2 - r^2 p^2` at `2 lo + 4 la` (`s = |a|^2`, `u = w x a`,
+/// `v = d x a`, `p = w . a`, `q = d . a`). Small integers when every span
+/// allows: inputs below `2^126` make `C` below `2^765` (13 limbs) and the
+/// discriminant below `2^1529` (26 limbs).
+fn exact(o: DVec3, d: DVec3, apex: DVec3, a: DVec3, r: f64) -> Roots {
+    let g = Grain::of(&[o.x, o.y, o.z, apex.x, apex.y, apex.z]);
+    let (gd, ga) = (Grain::of(&d.to_array()), Grain::of(&[a.x, a.y, a.z, r]));
+    let lo = if g.all_zero() { 0 } else { g.lo_min };
+    let grains = (lo, gd.lo_min, ga.lo_min);
+    if g.span().max(gd.span()).max(ga.span()) <= SMALL_SPAN {
+        exact_in::<2, 5, 9, 13, 26>([o, apex, d, a], r, grains)
+    } else {
+        exact_in::<W1, W2, W4, W6, W12>([o, apex, d, a], r, grains)
+    }
+}
+
+fn exact_in<
+    const N1: usize,
+    const N2: usize,
+    const N4: usize,
+    const N6: usize,
+    const N12: usize,
+>(
+    [o, apex, d, a]: [DVec3; 4],
+    r: f64,
+    (lo, ld, la): (i32, i32, i32),
+) -> Roots {
+    let int = |v: DVec3, g: i32| -> [FixedInt<N1>; 3] {
+        core::array::from_fn(|k| FixedInt::from_f64(v[k], g))
+    };
+    let (ow, pw) = (int(o, lo), int(apex, lo));
+    let w: [FixedInt<N1>; 3] = core::array::from_fn(|k| ow[k].sub(&pw[k]));
+    let (dw, aw) = (int(d, ld), int(a, la));
+    let rw = FixedInt::<N1>::from_f64(r, la);
+    let dot = |x: &[FixedInt<N1>; 3], y: &[FixedInt<N1>; 3]| -> FixedInt<N2> {
+        (0..3).fold(FixedInt::ZERO, |acc, k| {
+            acc.add(&FixedInt::mul(&x[k], &y[k]))
+        })
+    };
+    let dot2 = |x: &[FixedInt<N2>; 3], y: &[FixedInt<N2>; 3]| -> FixedInt<N4> {
+        (0..3).fold(FixedInt::ZERO, |acc, k| {
+            acc.add(&FixedInt::mul(&x[k], &y[k]))
+        })
+    };
+    let (u, v) = (cross3::<N1, N2>(&w, &aw), cross3::<N1, N2>(&dw, &aw));
+    let (s, rr) = (dot(&aw, &aw), FixedInt::<N2>::mul(&rw, &rw));
+    let (p, q) = (dot(&w, &aw), dot(&dw, &aw));
+    let coefficient = |x: FixedInt<N4>, m: &FixedInt<N2>, n: &FixedInt<N2>| -> FixedInt<N6> {
+        let mn = FixedInt::<N4>::mul(m, n);
+        FixedInt::<N6>::mul(&s, &x).sub(&FixedInt::mul(&rr, &mn))
+    };
+    let qa = coefficient(dot2(&v, &v), &q, &q);
+    let qb = coefficient(dot2(&u, &v), &p, &q);
+    let qc = coefficient(dot2(&u, &u), &p, &p);
+    exact_roots::<N6, N12>(
+        (&qa, 2 * ld + 4 * la),
+        (&qb, lo + ld + 4 * la),
+        (&qc, 2 * lo + 4 * la),
+    )
 }
 
 /// Which surface of a cone a cast's first crossing lies on.
@@ -243,7 +414,7 @@ impl RayCast for Cone {
         Some(match self.first_crossing(ray, range)? {
             Crossing::Lateral(t) => {
                 let normal = self.normal_at(ray.at(t), -ray.direction());
-                Hit::at(ray, t, self.lateral_t_error(ray, t), normal)
+                Hit::at(ray, t, root_t_error(t), normal)
             }
             Crossing::Base { t, num } => {
                 // The base plane's level |a|^2 (`a . â`) within gamma(4) of it,
@@ -260,8 +431,7 @@ impl RayCast for Cone {
         })
     }
 
-    /// [`RayCast::cast`]'s `t`, without its normal and point error (the
-    /// lateral root's bracket costs as much as the cast).
+    /// [`RayCast::cast`]'s `t`, without its normal and point error.
     fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
         Some(match self.first_crossing(ray, range)? {
             Crossing::Lateral(t) | Crossing::Base { t, .. } => t,

@@ -5,7 +5,7 @@ use super::point_error::{dot_error, quotient_t_error, root_t_error};
 use super::{Hit, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{exact_difference, two_prod, two_sum};
 use crate::arith::exponent::Grain;
-use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
+use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
@@ -173,8 +173,8 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
         core::array::from_fn(|k| FixedInt::from_f64(o[k], lo).sub(&FixedInt::from_f64(p[k], lo)));
     let dw: [FixedInt<N1>; 3] = core::array::from_fn(|k| FixedInt::from_f64(d[k], ld));
     let aw: [FixedInt<N1>; 3] = core::array::from_fn(|k| FixedInt::from_f64(ax[k], la));
-    let u: [FixedInt<N2>; 3] = cross(&w, &aw);
-    let v: [FixedInt<N2>; 3] = cross(&dw, &aw);
+    let u: [FixedInt<N2>; 3] = cross3(&w, &aw);
+    let v: [FixedInt<N2>; 3] = cross3(&dw, &aw);
     let (mut a, mut b, mut c, mut aa) = (
         FixedInt::<N4>::ZERO,
         FixedInt::<N4>::ZERO,
@@ -197,16 +197,6 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
     )
 }
 
-/// `x x y`, exactly.
-fn cross<const N1: usize, const N2: usize>(
-    x: &[FixedInt<N1>; 3],
-    y: &[FixedInt<N1>; 3],
-) -> [FixedInt<N2>; 3] {
-    core::array::from_fn(|k| {
-        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        FixedInt::<N2>::mul(&x[i], &y[j]).sub(&FixedInt::mul(&x[j], &y[i]))
-    })
-}
 impl RayCast for Cylinder {
     /// The first hit in `range`; the normal points away from the axis. A
     /// line lying on the surface hits at the point of `range` nearest

@@ -102,8 +102,7 @@ pub struct Hit {
     /// a secondary ray needs to leave the surface (pbrt-v4's `pError`).
     /// Derived beside each shape's cast from the bound on its `t` (see
     /// `point_error.rs`); infinite where a cast's `t` carries no certified
-    /// bound (a cone's side where its a-posteriori bracket fails: near
-    /// tangency).
+    /// bound (a `t` beyond `f64`'s range).
     pub error: DVec3,
 }
 
