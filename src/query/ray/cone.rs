@@ -42,9 +42,9 @@ impl Cone {
     ///
     /// The discriminant has degree 12 in the inputs. The filtered stage
     /// evaluates the polynomial's coefficients with the ray and the cone at
-    /// their own powers of two ([`ScaledLine`]), bounds their errors
+    /// their own powers of two, bounds their errors
     /// a priori and certifies each root a posteriori, as the quadrics do
-    /// ([`crate::roots::certified`]); where it cannot (near-tangent rays,
+    /// (`roots::certified`); where it cannot (near-tangent rays,
     /// rays through or near the apex, lines near a ruling's direction,
     /// inputs whose scaling is not exact), the exact stage decides the
     /// count from the coefficients as integers.
