@@ -19,7 +19,7 @@ use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray};
 use exactray::roots::Roots;
 use exactray::scene::TriangleMesh;
-use exactray::shape::{Cylinder, Quadric, Sphere, Triangle};
+use exactray::shape::{Cone, Cylinder, Quadric, Sphere, Triangle};
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
@@ -116,6 +116,12 @@ const KINDS: &[Kind] = &[
         min_fields: 14,
         predicate: Some(PerLine(crate_ray_cylinder)),
         oracle: Some(PerLine(oracle_ray_cylinder)),
+    },
+    Kind {
+        name: "ray_cone",
+        min_fields: 14,
+        predicate: Some(PerLine(crate_ray_cone)),
+        oracle: Some(PerLine(oracle_ray_cone)),
     },
     Kind {
         name: "ray_quadric",
@@ -387,6 +393,32 @@ fn crate_ray_cylinder(f: &[&str]) -> Result<Verdict, String> {
 fn oracle_ray_cylinder(f: &[&str]) -> Result<Verdict, String> {
     let (v, want) = parse_line_answer(f, 13, true)?;
     let q = Quadratic::cylinder(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), v[12]);
+    Ok(compare_answers(&want, q.answer()))
+}
+
+/// The fixture's double cone as the crate's: the same apex, axis and
+/// radius at `apex + axis`, and the same polynomial (`Cone::line_roots`
+/// covers both nappes). Only `r^2` enters it, so a negative `r` is the cone
+/// of radius `|r|`; `r = 0` (the axis line, doubled) is no `Cone`, which
+/// rejects a zero radius, and the line is reported as unusable.
+fn cone_of(v: &[f64]) -> Result<Cone, String> {
+    if v[12] == 0.0 {
+        return Err("r = 0: the cone degenerates to its axis, which Cone cannot express".into());
+    }
+    Cone::infinite(p3(v, 2), p3(v, 3), v[12].abs()).map_err(|e| e.to_string())
+}
+
+/// `line_roots` promises the sphere's accuracy (4 ulps of the correctly
+/// rounded root) for roots in the normal range, which is where the
+/// fixtures' roots lie.
+fn crate_ray_cone(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 13, false)?;
+    Ok(compare_roots(&want, cone_of(&v)?.line_roots(&ray_of(&v)?)))
+}
+
+fn oracle_ray_cone(f: &[&str]) -> Result<Verdict, String> {
+    let (v, want) = parse_line_answer(f, 13, false)?;
+    let q = Quadratic::cone(p3(&v, 0), p3(&v, 1), p3(&v, 2), p3(&v, 3), v[12]);
     Ok(compare_answers(&want, q.answer()))
 }
 
@@ -1231,6 +1263,41 @@ fn malformed_lines_are_rejected() {
         crate_orient2d(&fields("0 0 1 0 0 1 +1")).is_err(),
         "bad sign"
     );
+}
+
+#[test]
+fn ray_cone_lines_are_checked() {
+    let fields = |line: &'static str| line.split(' ').collect::<Vec<_>>();
+    let passes = |check: Checker, line| matches!(check(&fields(line)), Ok(Verdict::Pass));
+    let mismatches =
+        |check: Checker, line| matches!(check(&fields(line)), Ok(Verdict::Mismatch { .. }));
+    // Apex 0, axis (0, 0, 2), radius 2 at (0, 0, 2): along x at height 0.5,
+    // (t - 2)^2 = 0.25; along the ruling (1, 0, 1) every t; through the apex
+    // a double root.
+    let line = "-2 0 0.5 1 0 0 0 0 0 0 0 2 2";
+    for check in [crate_ray_cone as Checker, oracle_ray_cone] {
+        assert!(passes(check, "-2 0 0.5 1 0 0 0 0 0 0 0 2 2 2 1.5 2.5"));
+        assert!(passes(check, "3 0 3 1 0 1 0 0 0 0 0 2 2 inf"));
+        assert!(passes(check, "-1 -2 -3 1 2 3 0 0 0 0 0 2 2 1 1"));
+        assert!(mismatches(check, "-2 0 0.5 1 0 0 0 0 0 0 0 2 2 2 1.5 2.75"));
+        assert!(mismatches(check, "-2 0 0.5 1 0 0 0 0 0 0 0 2 2 0"));
+        assert!(mismatches(check, "3 0 3 1 0 1 0 0 0 0 0 2 2 0"));
+        for bad in [
+            format!("{line} 2 1.5"),       // too few roots
+            format!("{line} 1 1.5 2.5"),   // too many
+            format!("{line} inf 1.5"),     // roots after inf
+            format!("{line} two 1.5 2.5"), // bad count
+            line.to_string(),              // no count
+        ] {
+            assert!(check(&bad.split(' ').collect::<Vec<_>>()).is_err(), "{bad}");
+        }
+    }
+    // A negative radius is the same polynomial; a zero radius is no Cone.
+    assert!(passes(
+        crate_ray_cone,
+        "-2 0 0.5 1 0 0 0 0 0 0 0 2 -2 2 1.5 2.5"
+    ));
+    assert!(crate_ray_cone(&fields("-2 0 0.5 1 0 0 0 0 0 0 0 2 0 1 2")).is_err());
 }
 
 /// A whole-file checker's outcomes on the lines of `text`: `Some(true)` a

@@ -349,6 +349,7 @@ void gen_nearest_files(const std::string& outdir);
 // machinery, with check_root_rounding).
 void gen_ray_sphere_files(const std::string& outdir);
 void gen_ray_cylinder_files(const std::string& outdir);
+void gen_ray_cone_files(const std::string& outdir);
 void gen_ray_quadric_files(const std::string& outdir);
 void gen_ray_triangle_files(const std::string& outdir);
 

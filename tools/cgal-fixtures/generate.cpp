@@ -9,7 +9,7 @@
 // their own files: common.h (number types, randomness, exact IEEE helpers,
 // the sign-file Writer), predicates.cpp (orient2d, orient3d, plane_side),
 // nearest.cpp, ray.h (what the ray kinds share: exact roots, RayWriter),
-// ray_quadrics.cpp (ray_sphere, ray_cylinder, ray_quadric),
+// ray_quadrics.cpp (ray_sphere, ray_cylinder, ray_cone, ray_quadric),
 // ray_triangle.cpp and ray_mesh.cpp (one mesh per file with closest-hit and
 // shadow-segment queries).
 //
@@ -55,6 +55,7 @@ const KindEntry KINDS[] = {
     {"nearest", nullptr, gen_nearest_files},
     {"ray_sphere", nullptr, gen_ray_sphere_files},
     {"ray_cylinder", nullptr, gen_ray_cylinder_files},
+    {"ray_cone", nullptr, gen_ray_cone_files},
     {"ray_quadric", nullptr, gen_ray_quadric_files},
     {"ray_triangle", nullptr, gen_ray_triangle_files},
     {"ray_mesh", nullptr, gen_ray_mesh_files},

@@ -11,7 +11,7 @@
 namespace fixtures {
 
 // ---------------------------------------------------------------------------
-// Ray kinds: ray_sphere, ray_cylinder, ray_quadric, ray_triangle.
+// Ray kinds: ray_sphere, ray_cylinder, ray_cone, ray_quadric, ray_triangle.
 //
 // A case is a ray (or a line) and a shape; its answer is a number of roots
 // (a hit class for triangles) and the roots rounded to the nearest binary64.
@@ -92,14 +92,28 @@ inline I3 pythagorean_triple(Rng& r) {
 
 inline void append3(Case& v, const P3& p) { v.insert(v.end(), p.begin(), p.end()); }
 
-// 1-3 representable steps on one nonzero input (chosen among `slots`).
-inline void nudge_one(Rng& r, Case& v, const std::vector<size_t>& slots) {
+// 1-3 (1-max_ulps) representable steps on one nonzero input (chosen among
+// `slots`).
+inline void nudge_one(Rng& r, Case& v, const std::vector<size_t>& slots, int max_ulps = 3) {
   for (;;) {
     size_t i = slots[r.next() % slots.size()];
     if (v[i] == 0) continue;
-    v[i] = step_ulps(v[i], int(r.range(1, 3)) * r.sign());
+    v[i] = step_ulps(v[i], int(r.range(1, max_ulps)) * r.sign());
     return;
   }
+}
+
+// Every input of a ray case (o, d, then the shape) times 2^k exactly, or
+// half the time every input but d (slots 3-5): a root t stays t, or
+// becomes t 2^k.
+inline void scale_case(Rng& r, Case& v, int k) {
+  bool keep_d = r.chance(50);
+  for (size_t i = 0; i < v.size(); ++i)
+    if (!(keep_d && i >= 3 && i < 6)) {
+      Case one = {v[i]};
+      scale(one, k);
+      v[i] = one[0];
+    }
 }
 
 inline std::vector<size_t> all_slots(size_t n) {

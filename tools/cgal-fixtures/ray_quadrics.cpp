@@ -1,9 +1,11 @@
-// ray_sphere, ray_cylinder, ray_quadric: a line against a surface whose
-// equation in t has degree <= 2, answered by its exact real roots.
+// ray_sphere, ray_cylinder, ray_cone, ray_quadric: a line against a surface
+// whose equation in t has degree <= 2, answered by its exact real roots.
 
 #include "ray.h"
 
 #include <CGAL/squared_distance_3.h>
+
+#include <numeric>
 
 namespace fixtures {
 namespace {
@@ -278,14 +280,7 @@ void gen_ray_sphere(RayWriter& w) {
         case 2: v = sphere_tangent(r, r.chance(50)); break;
         default: v = sphere_on_surface(r); break;
       }
-      if (v.empty()) return v;
-      bool keep_d = r.chance(50);
-      for (size_t i = 0; i < v.size(); ++i)
-        if (!(keep_d && i >= 3 && i < 6)) {
-          Case one = {v[i]};
-          scale(one, 100 * sgn_k);
-          v[i] = one[0];
-        }
+      if (!v.empty()) scale_case(r, v, 100 * sgn_k);
       return v;
     });
   }
@@ -311,7 +306,9 @@ void gen_ray_sphere(RayWriter& w) {
 // ---------------------------------------------------------------------------
 // ray_cylinder: o d p a r -> n [t0 t1]
 
-Case cylinder_case(const P3& o, const P3& d, const P3& p, const P3& a, double r) {
+// A line o + t d and a shape around the axis through p along a with radius
+// r: the inputs of ray_cylinder and ray_cone.
+Case axial_case(const P3& o, const P3& d, const P3& p, const P3& a, double r) {
   Case v;
   append3(v, o);
   append3(v, d);
@@ -370,7 +367,7 @@ Case cylinder_random(Rng& r) {
   P3 aim = padd(padd(p, pmul(au, 2 * r.sym())), pmul(perp_dir(r, au), 1.3 * rad * r.unit()));
   P3 d = psub(aim, o);
   if (d == P3{0, 0, 0}) return {};
-  return cylinder_case(o, d, p, pmul(au, length_factor(r, -6, 5)), rad);
+  return axial_case(o, d, p, pmul(au, length_factor(r, -6, 5)), rad);
 }
 
 // d an exact multiple of A 2^ea: A k 2^j, k = +-1 or an odd integer.
@@ -388,7 +385,7 @@ Case cylinder_parallel(Rng& r, bool inside) {
   double rad = 0.25 + r.unit();
   double s = inside ? 0.95 * r.unit() : 1.05 + 2 * r.unit();
   P3 o = padd(padd(p, pmul(perp_dir(r, au), s * rad)), pmul(au, 4 * r.sym()));
-  Case v = cylinder_case(o, parallel_dir(r, A), p, a, rad);
+  Case v = axial_case(o, parallel_dir(r, A), p, a, rad);
   if (sgn(cylinder_poly(v).c) != (inside ? -1 : 1)) return {};
   return v;
 }
@@ -404,8 +401,8 @@ Case cylinder_on_surface(Rng& r) {
   int e = int(r.range(-40, 0));
   I3 C = bits3(r, 30);
   I3 O = add3(add3(C, mul3(W, m)), mul3(A, r.bits(20)));
-  return cylinder_case(lattice3(O, e), parallel_dir(r, A), lattice3(C, e), lattice3(A, int(r.range(-10, 10))),
-                       lattice(m * N, e));
+  return axial_case(lattice3(O, e), parallel_dir(r, A), lattice3(C, e), lattice3(A, int(r.range(-10, 10))),
+                    lattice(m * N, e));
 }
 
 // Exactly tangent: the tangent plane at T = C + m W has normal W; D = i A +
@@ -434,8 +431,8 @@ Case cylinder_tangent(Rng& r, bool axis) {
   I3 T = add3(C, mul3(W, m));
   int64_t span = int64_t(1) << (axis ? 24 : 14);
   I3 O = sub3(T, mul3(D, r.range(-span, span)));
-  return cylinder_case(lattice3(O, e), lattice3(D, int(r.range(-8, 8))), lattice3(C, e),
-                       lattice3(A, int(r.range(-10, 10))), lattice(m * N, e));
+  return axial_case(lattice3(O, e), lattice3(D, int(r.range(-8, 8))), lattice3(C, e),
+                    lattice3(A, int(r.range(-10, 10))), lattice(m * N, e));
 }
 
 // r = 1, axis (0,1,0) (30%) or random unit; the origin L from the axis, aimed
@@ -449,7 +446,7 @@ Case cylinder_far(Rng& r, double L) {
   double s = r.chance(50) ? r.unit() : 0.97 + 0.06 * r.unit();
   P3 d = psub(padd(padd(p, pmul(au, 2 * r.sym())), pmul(side, s)), o);
   if (r.chance(50)) d = pnormalize(d);
-  return cylinder_case(o, d, p, au, 1.0);
+  return axial_case(o, d, p, au, 1.0);
 }
 
 void gen_ray_cylinder(RayWriter& w) {
@@ -458,7 +455,7 @@ void gen_ray_cylinder(RayWriter& w) {
   quad_block(w, k, "random directions in [-1,1]^3", 60, [](Rng& r) {
     P3 d = uniform3(r, 0);
     if (d == P3{0, 0, 0}) return Case{};
-    return cylinder_case(uniform3(r, 2), d, P3{0, 0, 0}, kExamAxis, 1.0);
+    return axial_case(uniform3(r, 2), d, P3{0, 0, 0}, kExamAxis, 1.0);
   });
   quad_block(w, k, "aimed at a point within 1.3 of the axis, |y| < 2", 60, [](Rng& r) {
     P3 o = uniform3(r, 2), aim;
@@ -466,7 +463,7 @@ void gen_ray_cylinder(RayWriter& w) {
     while (aim[0] * aim[0] + aim[2] * aim[2] > 1.69);
     P3 d = psub(aim, o);
     if (d == P3{0, 0, 0}) return Case{};
-    return cylinder_case(o, d, P3{0, 0, 0}, kExamAxis, 1.0);
+    return axial_case(o, d, P3{0, 0, 0}, kExamAxis, 1.0);
   });
 
   w.section("random-axis", "axis through p in [-1,1]^3, a random of length 2^-6..2^6, r in [0.1, 2]", "02", "012");
@@ -536,7 +533,7 @@ void gen_ray_cylinder(RayWriter& w) {
                  P3 a = {0, 0, arbitrary(r)};
                  ch.d[2] = r.chance(30) ? 0.0 : arbitrary(r);
                  permute_axes(r, {&ch.o, &ch.d, &ch.c, &a});
-                 return cylinder_case(ch.o, ch.d, ch.c, a, ch.R);
+                 return axial_case(ch.o, ch.d, ch.c, a, ch.R);
                });
   }
 }
@@ -1077,6 +1074,349 @@ void gen_ray_quadric(RayWriter& w) {
              "(r1 + r2) / 2 +- (r2 - r1) sqrt(1/4 - c)", 50, [](Rng& r) { return quadric_close(r, 2); }, "2");
 }
 
+// ---------------------------------------------------------------------------
+// ray_cone: o d p a r -> n [t0 [t1]]; the double cone
+// |(x - p) x a|^2 |a|^2 = r^2 ((x - p) . a)^2, both nappes.
+
+// With w = o - p, s = |a|^2, u = w x a, v = d x a, h = w . a, q = d . a:
+// (s |v|^2 - r^2 q^2) t^2 + 2 (s u . v - r^2 h q) t + s |u|^2 - r^2 h^2.
+Poly2 cone_poly(const Case& v) {
+  QV w = qsub(qv3(v, 0), qv3(v, 6)), d = qv3(v, 3), a = qv3(v, 9);
+  QV u = qcross(w, a), x = qcross(d, a);
+  Q s = qdot(a, a), rr = Q(v[12]) * Q(v[12]), h = qdot(w, a), q = qdot(d, a);
+  return Poly2{Q(s * qdot(x, x) - rr * q * q), Q(2 * (s * qdot(u, x) - rr * h * q)), Q(s * qdot(u, u) - rr * h * h)};
+}
+
+// The definition at o + t d in CGAL's rational kernel (its cross and scalar
+// products), independent of the expansion above.
+Q cone_direct(const Case& v, const Q& t) {
+  using R = CGAL::Exact_rational;
+  auto vec = [&v](size_t i) { return RatK::Vector_3(Rq(v[i]), Rq(v[i + 1]), Rq(v[i + 2])); };
+  RatK::Vector_3 w = vec(0) + R(t.get_mpq_t()) * vec(3) - vec(6), a = vec(9);
+  R h = w * a, rr = Rq(v[12]) * Rq(v[12]);
+  return to_q(R(CGAL::cross_product(w, a).squared_length() * a.squared_length() - rr * h * h));
+}
+
+std::array<double, 3> cone_naive(const Case& v) {
+  P3 w = {v[0] - v[6], v[1] - v[7], v[2] - v[8]}, d = {v[3], v[4], v[5]}, a = {v[9], v[10], v[11]};
+  P3 u = pcross(w, a), x = pcross(d, a);
+  double s = pdot(a, a), rr = v[12] * v[12], h = pdot(w, a), q = pdot(d, a);
+  return {s * pdot(x, x) - rr * q * q, 2 * (s * pdot(u, x) - rr * h * q), s * pdot(u, u) - rr * h * h};
+}
+
+const QuadKind kRayCone = {"ray_cone", 13, cone_poly, cone_direct, nullptr, cone_naive, false};
+
+// An exact cone in integers: the axis A, W perpendicular to A with |W| = N,
+// and the radius m N at apex + A. D = A + m W is a ruling (D x A = m W x A
+// has length |m| N |A|, and D . A = |A|^2, so |D x A|^2 |A|^2 = (m N)^2
+// (D . A)^2), and G = |A|^2 W - m N^2 A is normal to the tangent plane along
+// it (the gradient of the cone's polynomial at D, 2 s^2 D - 2 (s + m^2 N^2)
+// (D . A) A with s = |A|^2, divided by 2 m s; G . D = 0). axis: A = +-2^k e_j
+// and W a Pythagorean triple in the other two coordinates; otherwise W a
+// Pythagorean quadruple and A = W x v (any axis).
+struct ConeFrame {
+  I3 A, W;
+  int64_t N, m;
+  I3 ruling() const { return add3(A, mul3(W, m)); }
+  I3 tangent_normal() const { return sub3(mul3(W, dot3(A, A)), mul3(A, m * N * N)); }
+};
+
+ConeFrame cone_frame(Rng& r, bool axis) {
+  ConeFrame f;
+  if (axis) {
+    I3 t = pythagorean_triple(r);
+    int j = int(r.next() % 3);
+    f.A = {0, 0, 0};
+    f.A[j] = r.sign() * (int64_t(1) << r.range(0, 6));
+    f.W = {0, 0, 0};
+    f.W[(j + 1) % 3] = t[0];
+    f.W[(j + 2) % 3] = t[1];
+    f.N = t[2];
+  } else {
+    f.W = pythagorean(r, 2, f.N);
+    do f.A = cross3(f.W, nonzero_bits3(r, 3));
+    while (zero3(f.A));
+  }
+  f.m = r.range(1, 8) * r.sign();
+  return f;
+}
+
+// The frame's cone with its apex at C 2^e and (A, m N) scaled by 2^ea, and
+// the line through (O 2^e) along d.
+Case frame_case(Rng& r, const ConeFrame& f, const I3& C, const I3& O, int e, const P3& d) {
+  int ea = int(r.range(-10, 10));
+  return axial_case(lattice3(O, e), d, lattice3(C, e), lattice3(f.A, ea), lattice(std::llabs(f.m) * f.N, ea));
+}
+
+// v divided by the gcd of its coordinates.
+I3 primitive3(const I3& v) {
+  int64_t g = std::gcd(std::gcd(std::llabs(v[0]), std::llabs(v[1])), std::llabs(v[2]));
+  return g == 0 ? v : I3{v[0] / g, v[1] / g, v[2] / g};
+}
+
+// A direction in the tangent plane along the frame's ruling, not parallel to
+// it (zero if the draw failed).
+I3 tangent_dir(Rng& r, const ConeFrame& f) {
+  I3 V = primitive3(cross3(f.tangent_normal(), nonzero_bits3(r, 2)));
+  return zero3(cross3(V, f.ruling())) ? I3{0, 0, 0} : V;
+}
+
+// A ruling through the apex C 2^e: o = (C + S D) 2^e (S = 0: the apex), d
+// an exact multiple of D (parallel_dir). n = inf.
+Case cone_ruling(Rng& r, bool axis) {
+  ConeFrame f = cone_frame(r, axis);
+  I3 C = bits3(r, 30), D = f.ruling();
+  int64_t S = r.chance(10) ? 0 : r.range(-(1 << 16), 1 << 16);
+  return frame_case(r, f, C, add3(C, mul3(D, S)), int(r.range(-40, 0)), parallel_dir(r, D));
+}
+
+// A line parallel to a ruling D through (C + X) 2^e. tangent_plane false:
+// X random (|X| < 2^20), degree one (n = 1, t = -c / b). true: X = i D + j V
+// in the tangent plane along D, j != 0: the plane meets the cone in that
+// ruling only, doubled, so the polynomial is a nonzero constant (n = 0).
+Case cone_parallel_ruling(Rng& r, bool tangent_plane) {
+  ConeFrame f = cone_frame(r, r.chance(50));
+  I3 C = bits3(r, 30), D = f.ruling(), X;
+  if (tangent_plane) {
+    I3 V = tangent_dir(r, f);
+    int64_t j = r.range(1, 1 << 8) * r.sign();
+    if (zero3(V)) return {};
+    X = add3(mul3(D, r.range(-(1 << 8), 1 << 8)), mul3(V, j));
+  } else {
+    X = nonzero_bits3(r, 20);
+  }
+  return frame_case(r, f, C, add3(C, X), int(r.range(-40, 0)), parallel_dir(r, D));
+}
+
+// Exactly tangent: T = C + S' D on a ruling (S' != 0: not the apex), V in
+// the tangent plane along it, origin T - S V, d = V k 2^j: a double root at
+// t = S 2^(e - j) / k.
+Case cone_tangent(Rng& r, bool axis) {
+  ConeFrame f = cone_frame(r, axis);
+  I3 V = tangent_dir(r, f);
+  if (zero3(V)) return {};
+  int64_t Sp;
+  do Sp = r.range(-(1 << 16), 1 << 16);
+  while (Sp == 0);
+  I3 C = bits3(r, 30), T = add3(C, mul3(f.ruling(), Sp));
+  I3 O = sub3(T, mul3(V, r.range(-(1 << 12), 1 << 12)));
+  int64_t k = r.chance(50) ? r.sign() : (2 * r.range(1, 7) + 1) * r.sign();
+  return frame_case(r, f, C, O, int(r.range(-40, 0)), lattice3(mul3(V, k), int(r.range(-8, 8))));
+}
+
+// Unit-ish cone: apex in [-1,1]^3, axis a random unit vector (30%: +-e_j)
+// times 2^-6..2^6 (not a power of two), r = k |a| with k in [0.2, 2].
+struct UnitCone {
+  P3 p, au, a;
+  double r, k;
+};
+
+UnitCone unit_cone(Rng& r) {
+  UnitCone c;
+  c.p = uniform3(r, 0);
+  if (r.chance(30)) {
+    c.au = {0, 0, 0};
+    c.au[r.next() % 3] = r.sign();
+  } else {
+    c.au = unit_dir(r);
+  }
+  double len = length_factor(r, -6, 5);
+  c.a = pmul(c.au, len);
+  c.k = 0.2 + 1.8 * r.unit();
+  c.r = c.k * len;
+  return c;
+}
+
+// A point at height h along the axis, s times the cone's radius there from
+// the axis (s < 1 inside, > 1 outside).
+P3 cone_aim(Rng& r, const UnitCone& c, double h, double s) {
+  return padd(padd(c.p, pmul(c.au, h)), pmul(perp_dir(r, c.au), s * c.k * std::fabs(h)));
+}
+
+// Origin in [-4,4]^3; direction random, or aimed at a point within 1.3 of
+// the radius at a height in [-2, 2] (either nappe).
+Case cone_random(Rng& r, bool aimed) {
+  UnitCone c = unit_cone(r);
+  P3 o = uniform3(r, 2);
+  P3 d = aimed ? psub(cone_aim(r, c, 2 * r.sym(), 1.3 * r.unit()), o) : uniform3(r, 0);
+  if (d == P3{0, 0, 0}) return {};
+  return axial_case(o, d, c.p, c.a, c.r);
+}
+
+// Through the apex C 2^e along V: o = (C + S V) 2^e, d = V k 2^j; the
+// polynomial is (t + S 2^(e - j) / k)^2 times its value at d: a double root
+// wherever V is not a ruling. Cones: a unit-ish cone with V random (3 in 4),
+// or a frame's cone with V its axis, perpendicular to it (W), or A + m' W,
+// |m'| != |m| (inside or outside).
+Case cone_apex(Rng& r) {
+  I3 C = bits3(r, 30), V;
+  int e = int(r.range(-40, 0));
+  int64_t S = r.chance(10) ? 0 : r.range(-(1 << 16), 1 << 16);
+  int64_t k = r.chance(50) ? r.sign() : (2 * r.range(1, 7) + 1) * r.sign();
+  int pick = int(r.range(0, 3));
+  auto d_of = [&](const I3& v) { return lattice3(mul3(v, k), int(r.range(-20, 20))); };
+  if (pick == 0) {
+    ConeFrame f = cone_frame(r, r.chance(50));
+    int64_t mp;
+    do mp = r.range(-16, 16);
+    while (mp == f.m || mp == -f.m);
+    V = r.chance(30) ? f.A : r.chance(30) ? f.W : add3(f.A, mul3(f.W, mp));
+    return frame_case(r, f, C, add3(C, mul3(V, S)), e, d_of(V));
+  }
+  UnitCone c = unit_cone(r);
+  V = nonzero_bits3(r, 12);
+  return axial_case(lattice3(add3(C, mul3(V, S)), e), d_of(V), lattice3(C, e), c.a, c.r);
+}
+
+// A unit-ish cone, the origin L from the apex in a random direction, aimed
+// at a point at height +-[0.5, 2] s times the radius there from the axis,
+// s in [0, 1) or [0.97, 1.03]; d = aim - o or unit.
+Case cone_far(Rng& r, double L) {
+  UnitCone c = unit_cone(r);
+  P3 o = padd(c.p, pmul(unit_dir(r), L));
+  double h = r.sign() * (0.5 + 1.5 * r.unit()), s = r.chance(50) ? r.unit() : 0.97 + 0.06 * r.unit();
+  P3 d = psub(cone_aim(r, c, h, s), o);
+  if (r.chance(50)) d = pnormalize(d);
+  return axial_case(o, d, c.p, c.a, c.r);
+}
+
+// A case as in one of the sections above (random, ruling, apex, both
+// parallel-ruling blocks, tangent, far-origin at 1e6, and near-ruling,
+// near-apex and grazing: one input moved by 1-3 ulps), for scaling.
+Case cone_any(Rng& r) {
+  Case v;
+  switch (r.next() % 10) {
+    case 0: return cone_random(r, true);
+    case 1: return cone_ruling(r, r.chance(50));
+    case 2: return cone_apex(r);
+    case 3: return cone_parallel_ruling(r, false);
+    case 4: return cone_parallel_ruling(r, true);
+    case 5: return cone_tangent(r, r.chance(50));
+    case 6: return cone_far(r, 1e6);
+    case 7: v = r.chance(50) ? cone_ruling(r, r.chance(50)) : cone_parallel_ruling(r, false); break;
+    case 8: v = cone_apex(r); break;
+    default: v = cone_tangent(r, r.chance(50)); break;
+  }
+  if (!v.empty()) nudge_one(r, v, all_slots(13));
+  return v;
+}
+
+// The cone's polynomial is homogeneous in w = o - p, in d and in (a, r)
+// jointly: scaling (o, p) by 2^ko, d by 2^kd and (a, r) by 2^ka (each in
+// {-500, 0, 500}, not all 0) scales its roots by 2^(ko - kd).
+void scale_cone_groups(Rng& r, Case& v) {
+  int k[3];
+  do
+    for (int& x : k) x = 500 * int(r.range(-1, 1));
+  while (k[0] == 0 && k[1] == 0 && k[2] == 0);
+  for (size_t i = 0; i < v.size(); ++i) {
+    Case one = {v[i]};
+    scale(one, k[i < 3 || (i >= 6 && i < 9) ? 0 : i < 6 ? 1 : 2]);
+    v[i] = one[0];
+  }
+}
+
+void gen_ray_cone(RayWriter& w) {
+  const QuadKind& k = kRayCone;
+  w.section("random",
+            "unit-ish cones: apex in [-1,1]^3, a a random unit vector (30%: +-e_j) times 2^-6..2^6, r = k |a|, "
+            "k in [0.2, 2]; origins in [-4,4]^3",
+            "02", "012");
+  quad_block(w, k, "random directions in [-1,1]^3", 50, [](Rng& r) { return cone_random(r, false); });
+  quad_block(w, k, "aimed at a point within 1.3 of the cone's radius at a height in [-2, 2] (either nappe)", 60,
+             [](Rng& r) { return cone_random(r, true); });
+
+  w.section("ruling",
+            "lines on the cone (n = inf): apex C 2^e, a = A 2^ea, r = m N 2^ea with W . A = 0, |W| = N; the "
+            "ruling D = A + m W; o = (C + S D) 2^e (S = 0: the apex), d = D k 2^j",
+            "i", "i");
+  quad_block(w, k, "A = +-2^k e_j, W a Pythagorean triple", 50, [](Rng& r) { return cone_ruling(r, true); }, "i");
+  quad_block(w, k, "any axis: W a Pythagorean quadruple, A = W x v", 50, [](Rng& r) { return cone_ruling(r, false); },
+             "i");
+
+  w.section("apex",
+            "lines through the apex, not on the cone: a double root at t = -S 2^(e-j) / k (o = (C + S V) 2^e, "
+            "d = V k 2^j; S = 0: the origin at the apex)",
+            "1", "1");
+  quad_block(w, k, "unit-ish cones with V random; exact cones with V along the axis, across it or A + m' W", 100,
+             cone_apex, "1");
+
+  w.section("parallel-ruling",
+            "d along a ruling D (as in `ruling`, axis-aligned or any axis), origin off it: degree one (n = 1, "
+            "t = -c/b); in the tangent plane along D, the polynomial a nonzero constant (n = 0)",
+            "01", "01");
+  quad_block(w, k, "origin (C + X) 2^e, X random below 2^20: n = 1", 100,
+             [](Rng& r) { return cone_parallel_ruling(r, false); }, "1");
+  quad_block(w, k, "origin (C + i D + j V) 2^e, V in the tangent plane along D: n = 0", 50,
+             [](Rng& r) { return cone_parallel_ruling(r, true); }, "0");
+
+  w.section("near-ruling",
+            "the ruling and parallel-ruling (n = 1) lines with one coordinate of d moved by 1 ulp: a tiny leading "
+            "coefficient, one root far out (rulings: the other exactly 0, the origin being on the cone)",
+            "2", "012");
+  quad_block(w, k, "rulings through the apex, d moved 1 ulp", 50, [](Rng& r) {
+    Case v = cone_ruling(r, r.chance(50));
+    nudge_one(r, v, {3, 4, 5}, 1);
+    return v;
+  });
+  quad_block(w, k, "lines parallel to a ruling, d moved 1 ulp", 50, [](Rng& r) {
+    Case v = cone_parallel_ruling(r, false);
+    if (!v.empty()) nudge_one(r, v, {3, 4, 5}, 1);
+    return v;
+  });
+
+  w.section("near-apex", "the apex lines with one coordinate of o or p moved by 1-3 ulps", "02", "012");
+  quad_block(w, k, "one of o, p moved", 50, [](Rng& r) {
+    Case v = cone_apex(r);
+    nudge_one(r, v, {0, 1, 2, 6, 7, 8});
+    return v;
+  });
+
+  w.section("tangent",
+            "exactly tangent (n = 1): T = (C + S' D) 2^e on a ruling D (S' != 0), V = (G x u) in the tangent plane "
+            "along D (G = |A|^2 W - m N^2 A), not parallel to D; o = (T - S V) 2^e, d = V k 2^j",
+            "1", "1");
+  quad_block(w, k, "A = +-2^k e_j, W a Pythagorean triple", 50, [](Rng& r) { return cone_tangent(r, true); }, "1");
+  quad_block(w, k, "any axis: W a Pythagorean quadruple, A = W x v", 50, [](Rng& r) { return cone_tangent(r, false); },
+             "1");
+
+  w.section("grazing", "the tangent lines with one input moved by 1-3 ulps", "02", "012");
+  quad_block(w, k, "one of o, d, p, a, r moved", 60, [](Rng& r) {
+    Case v = cone_tangent(r, r.chance(50));
+    if (!v.empty()) nudge_one(r, v, all_slots(13));
+    return v;
+  });
+
+  w.section("far-origin",
+            "unit-ish cones, origin 1e6..1e8 from the apex, aimed at a point at height +-[0.5, 2] s times the "
+            "radius there from the axis, s in [0,1) or [0.97,1.03]; d = aim - o or unit",
+            "02", "012");
+  for (const char* L : {"1e6", "1e7", "1e8"}) {
+    double dist = std::strtod(L, nullptr);
+    quad_block(w, k, std::string("|o - p| = ") + L, 50, [dist](Rng& r) { return cone_far(r, dist); });
+  }
+
+  w.section("scaled",
+            "cases from random, ruling, apex, parallel-ruling (both blocks), tangent, far-origin (1e6), near-ruling, "
+            "near-apex and grazing (any input moved by 1-3 ulps) multiplied exactly by 2^500 or 2^-500: everything "
+            "(t unchanged) or all but d (t scaled); or each group by its own power",
+            "012i", "012i");
+  for (int sgn_k : {1, -1}) {
+    std::string label = std::string("scaled by 2^") + (sgn_k > 0 ? "500" : "-500");
+    quad_block(w, k, label, 60, [sgn_k](Rng& r) {
+      Case v = cone_any(r);
+      if (!v.empty()) scale_case(r, v, 500 * sgn_k);
+      return v;
+    });
+  }
+  quad_block(w, k, "(o, p), d and (a, r) each times 2^-500, 1 or 2^500 (not all 1): t times 2^(k_op - k_d)", 60,
+             [](Rng& r) {
+               Case v = cone_any(r);
+               if (!v.empty()) scale_cone_groups(r, v);
+               return v;
+             });
+}
+
 const char* const kRayHeaderQuad =
     "# The polynomial in t has exact rational coefficients; n comes from the exact sign of its\n"
     "# discriminant (and its degree). Roots are rounded to the nearest binary64 (ties to even):\n"
@@ -1104,6 +1444,17 @@ void gen_ray_cylinder_files(const std::string& outdir) {
                      std::string(kRayHeaderQuad) +
                      "# The count is checked against CGAL's squared line-line distance (rational kernel).\n",
                  gen_ray_cylinder);
+}
+
+void gen_ray_cone_files(const std::string& outdir) {
+  write_ray_file(outdir, "ray_cone",
+                 "# Line: ox oy oz dx dy dz px py pz ax ay az r n [t0 [t1]]; the line o + t d against the\n"
+                 "# double cone |(x - p) x a|^2 |a|^2 = r^2 ((x - p) . a)^2 (apex p, axis a, radius r at p + a;\n"
+                 "# both nappes). Exactly n roots follow (one for a double root or degree one); n = inf: the\n"
+                 "# line is a ruling of the cone.\n" +
+                     std::string(kRayHeaderQuad) +
+                     "# The expansion is checked against the definition in CGAL's rational kernel at t = -1, 0, 1.\n",
+                 gen_ray_cone);
 }
 
 void gen_ray_quadric_files(const std::string& outdir) {

@@ -450,14 +450,7 @@ Case scaled_tri(Rng& r, int k) {
       v = tri_case(r, lattice3(T.bary(r, int(r.range(0, 2))), T.e), uniform3(r, 0), T.tri());
     }
   }
-  if (v.empty()) return v;
-  bool keep_d = r.chance(50);
-  for (size_t i = 0; i < v.size(); ++i)
-    if (!(keep_d && i >= 3 && i < 6)) {
-      Case one = {v[i]};
-      scale(one, k);
-      v[i] = one[0];
-    }
+  if (!v.empty()) scale_case(r, v, k);
   return v;
 }
 

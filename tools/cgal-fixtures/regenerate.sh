@@ -2,9 +2,9 @@
 # Rebuilds the generator and rewrites the fixtures it owns in tests/fixtures/:
 # orient2d.txt, orient3d.txt, plane_side.txt, incircle.txt, insphere.txt,
 # one nearest-<set>.txt per point set, and ray_sphere.txt, ray_cylinder.txt,
-# ray_quadric.txt, ray_triangle.txt, one ray_mesh-<mesh>.txt per mesh (other
-# files there are left alone). The
-# output is deterministic: rerunning gives byte-identical files.
+# ray_cone.txt, ray_quadric.txt, ray_triangle.txt, one ray_mesh-<mesh>.txt
+# per mesh (other files there are left alone). The output is deterministic:
+# rerunning gives byte-identical files.
 #
 #   tools/cgal-fixtures/regenerate.sh          rewrite tests/fixtures/
 #   tools/cgal-fixtures/regenerate.sh --check  fail if tests/fixtures/ is stale
