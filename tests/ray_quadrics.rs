@@ -8,7 +8,7 @@
 use exactray::InputError;
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
-use exactray::query::ray::RayCast;
+use exactray::query::ray::{Precise, RayCast};
 use exactray::roots::Roots;
 use exactray::shape::{CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
 use exactray::testing::{
@@ -41,18 +41,25 @@ fn check(got: Roots, want: &LineAnswer, what: &str) -> Result<(), TestCaseError>
     Ok(())
 }
 
-/// `cast_t` against the exact answer, for the forward range, the whole
-/// line, and ranges starting between the roots and after the first one
-/// (which make the cast look past the smaller root): the first correctly
-/// rounded root inside the range, within [`ULPS`], or none. A range bound
-/// within a few ulps of a root may fall on either side of it, so such
-/// ranges are skipped.
-fn check_first(
-    shape: &impl RayCast,
+/// Both tiers' casts against the exact answer, for the forward range, the
+/// whole line, and ranges starting between the roots and after the first
+/// one (which make the cast look past the smaller root): the precise tier
+/// (`Precise(shape).cast_t`) returns the first correctly rounded root
+/// inside the range within [`ULPS`], or none; the default tier
+/// (`cast_bounded`) the same hit or miss, with the exact root inside its
+/// returned bound (decided exactly by the oracle), and `cast` and
+/// `cast_t` agree with it. A range bound within a few ulps of a root may
+/// fall on either side of it, so such ranges are skipped.
+fn check_first<S: RayCast + Copy>(
+    shape: &S,
     ray: &Ray,
+    exact: &Quadratic,
     want: &LineAnswer,
     what: &str,
-) -> Result<(), TestCaseError> {
+) -> Result<(), TestCaseError>
+where
+    Precise<S>: RayCast,
+{
     let mut ranges = vec![
         Interval::FORWARD,
         Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap(),
@@ -78,12 +85,12 @@ fn check_first(
         let Some(expected) = want.first_admitted(range.min(), range.max(), ULPS as u32) else {
             continue;
         };
-        let got = shape.cast_t(ray, range);
+        let got = Precise(*shape).cast_t(ray, range);
         match (got, expected) {
             (None, None) => {}
             (Some(g), Some(w)) => prop_assert!(
                 ulps_between(g, w) <= ULPS,
-                "{}: cast_t in {:?}: {} vs correctly rounded {}",
+                "{}: precise cast_t in {:?}: {} vs correctly rounded {}",
                 what,
                 range,
                 g,
@@ -91,13 +98,43 @@ fn check_first(
             ),
             _ => prop_assert!(
                 false,
-                "{}: cast_t in {:?}: {:?}, want {:?}",
+                "{}: precise cast_t in {:?}: {:?}, want {:?}",
                 what,
                 range,
                 got,
                 expected
             ),
         }
+        let bounded = shape.cast_bounded(ray, range);
+        match (bounded, expected) {
+            (None, None) => {}
+            (Some(b), Some(w)) => {
+                let index = want
+                    .roots
+                    .iter()
+                    .position(|&r| r == w)
+                    .expect("the expected root is one of the roots");
+                prop_assert!(
+                    exact.root_within(index, b.t, b.error),
+                    "{}: cast_bounded in {:?}: {:?}, the exact root (rounded: {}) outside",
+                    what,
+                    range,
+                    b,
+                    w
+                );
+            }
+            _ => prop_assert!(
+                false,
+                "{}: cast_bounded in {:?}: {:?}, want {:?}",
+                what,
+                range,
+                bounded,
+                expected
+            ),
+        }
+        prop_assert_eq!(shape.cast_t(ray, range), bounded.map(|b| b.t));
+        let hit = shape.cast(ray, range).map(|h| (h.t, h.t_error));
+        prop_assert_eq!(hit, bounded.map(|b| (b.t, b.error)));
     }
     Ok(())
 }
@@ -119,10 +156,11 @@ fn sphere_case(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Result<(), Test
     prop_assume!(d != [0.0; 3]);
     let s = Sphere::new(c, r).unwrap();
     let ray = Ray::new(o, d).unwrap();
-    let want = Quadratic::sphere(o, d, c, r).answer();
+    let exact = Quadratic::sphere(o, d, c, r);
+    let want = exact.answer();
     let what = format!("sphere {o:?} {d:?} {c:?} {r}");
     check(s.line_roots(&ray), &want, &what)?;
-    check_first(&s, &ray, &want, &what)
+    check_first(&s, &ray, &exact, &want, &what)
 }
 
 fn cylinder_case(
@@ -135,20 +173,22 @@ fn cylinder_case(
     prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
     let cyl = Cylinder::new(p, a, r).unwrap();
     let ray = Ray::new(o, d).unwrap();
-    let want = Quadratic::cylinder(o, d, p, a, r).answer();
+    let exact = Quadratic::cylinder(o, d, p, a, r);
+    let want = exact.answer();
     let what = format!("cylinder {o:?} {d:?} {p:?} {a:?} {r}");
     check(cyl.line_roots(&ray), &want, &what)?;
-    check_first(&cyl, &ray, &want, &what)
+    check_first(&cyl, &ray, &exact, &want, &what)
 }
 
 fn quadric_case(o: [f64; 3], d: [f64; 3], k: [f64; 10]) -> Result<(), TestCaseError> {
     prop_assume!(d != [0.0; 3]);
     let q = Quadric::new(k).unwrap();
     let ray = Ray::new(o, d).unwrap();
-    let want = Quadratic::quadric(o, d, k).answer();
+    let exact = Quadratic::quadric(o, d, k);
+    let want = exact.answer();
     let what = format!("quadric {o:?} {d:?} {k:?}");
     check(q.line_roots(&ray), &want, &what)?;
-    check_first(&q, &ray, &want, &what)
+    check_first(&q, &ray, &exact, &want, &what)
 }
 
 proptest! {
@@ -311,12 +351,37 @@ fn cone_case(
     prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
     let cone = Cone::infinite(p, a, r).unwrap();
     let ray = Ray::new(o, d).unwrap();
-    let want = Quadratic::cone(o, d, p, a, r).answer();
-    check(
-        cone.line_roots(&ray),
-        &want,
-        &format!("cone {o:?} {d:?} {p:?} {a:?} {r}"),
-    )
+    let exact = Quadratic::cone(o, d, p, a, r);
+    let want = exact.answer();
+    let what = format!("cone {o:?} {d:?} {p:?} {a:?} {r}");
+    check(cone.line_roots(&ray), &want, &what)?;
+    // The casts keep the cone's own nappe (decided in f64): each tier's hit
+    // is one of the line's roots, the default tier's exact root inside its
+    // bound, the precise tier's within ULPS of the correctly rounded root.
+    let whole = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+    for range in [Interval::FORWARD, whole] {
+        if let (Some(b), Some(n)) = (cone.cast_bounded(&ray, range), want.count) {
+            prop_assert!(
+                (0..n).any(|i| exact.root_within(i, b.t, b.error)),
+                "{}: cast_bounded in {:?}: {:?}, roots {:?}",
+                what,
+                range,
+                b,
+                want.roots
+            );
+        }
+        if let Some(t) = Precise(cone).cast_t(&ray, range) {
+            prop_assert!(
+                want.roots.iter().any(|&w| ulps_between(t, w) <= ULPS),
+                "{}: precise cast_t in {:?}: {}, roots {:?}",
+                what,
+                range,
+                t,
+                want.roots
+            );
+        }
+    }
+    Ok(())
 }
 
 /// A case check outside proptest: a failure panics, a rejected case (a
@@ -554,6 +619,36 @@ fn all_zero_quadric_holds_every_line() {
     }
 }
 
+/// A fuzz finding of the `ray_quadrics` target (mode 214, small integers):
+/// the target held a double cone's cast to the line's first root but
+/// never computed the cast (the casts keep one nappe, so the target now
+/// checks their bounds only). Here the first root lies on the cone's own
+/// nappe: both tiers' hits and the line roots against the exact line.
+#[test]
+fn cone_cast_keeps_its_nappe() {
+    let v = [
+        5.0, -8.0, -8.0, 2.0, 4.0, 5.0, 6.0, 8.0, 4.0, 7.0, -8.0, 6.0, 7.0,
+    ];
+    let (o, d, p, a, r) = (
+        [v[0], v[1], v[2]],
+        [v[3], v[4], v[5]],
+        [v[6], v[7], v[8]],
+        [v[9], v[10], v[11]],
+        v[12],
+    );
+    must_pass(cone_case(o, d, p, a, r));
+    let cone = Cone::infinite(p, a, r).unwrap();
+    let ray = Ray::new(o, d).unwrap();
+    let exact = Quadratic::cone(o, d, p, a, r);
+    let want = exact.answer();
+    assert_eq!(want.count, Some(2));
+    // The first root lies on the cone's own nappe: both tiers hit there.
+    let b = cone.cast_bounded(&ray, Interval::FORWARD).unwrap();
+    assert!(exact.root_within(0, b.t, b.error), "{b:?} vs {want:?}");
+    let t = Precise(cone).cast_t(&ray, Interval::FORWARD).unwrap();
+    assert!(ulps_between(t, want.roots[0]) <= ULPS, "{t} vs {want:?}");
+}
+
 #[test]
 fn fuzz_findings() {
     // Coefficients near f64::MAX: doubling them in f64 overflowed.
@@ -647,8 +742,9 @@ fn partial_products_that_underflow_decline_the_filter() {
     let (o, d) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
     let k: [f64; 10] = core::array::from_fn(|i| v[6 + i]);
     let ray = Ray::new(o, d).unwrap();
-    let want = Quadratic::quadric(o, d, k).answer();
+    let exact = Quadratic::quadric(o, d, k);
+    let want = exact.answer();
     assert_eq!(want.count, Some(2));
     check(Quadric::new(k).unwrap().line_roots(&ray), &want, "finding").unwrap();
-    check_first(&Quadric::new(k).unwrap(), &ray, &want, "finding").unwrap();
+    check_first(&Quadric::new(k).unwrap(), &ray, &exact, &want, "finding").unwrap();
 }

@@ -58,6 +58,9 @@ pub struct Row {
     pub cases: u64,
     pub errors: u64,
     pub max_ulps: Option<f64>,
+    /// For a method that returns a certified bound with its value: the
+    /// largest bound, in ulps of the value, over the cases it answered.
+    pub max_bound_ulps: Option<f64>,
 }
 
 /// A routine under test, answering a case of type `C` with an `O`.

@@ -338,6 +338,7 @@ fn measure(
             cases: sample.len() as u64,
             errors,
             max_ulps: None,
+            max_bound_ulps: None,
         });
     }
     details.push(Detail {

@@ -89,6 +89,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
                     cases: 0,
                     errors: 0,
                     max_ulps: None,
+                    max_bound_ulps: None,
                 });
             }
             line.push(format!("{own:.1} B"));

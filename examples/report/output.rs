@@ -114,7 +114,7 @@ pub fn json(rows: &[Row]) -> String {
         .iter()
         .map(|r| {
             format!(
-                "  {{\"family\": {}, \"method\": {}, \"inputs\": {}, \"ns_per_op\": {}, \"cases\": {}, \"errors\": {}, \"max_ulps\": {}}}",
+                "  {{\"family\": {}, \"method\": {}, \"inputs\": {}, \"ns_per_op\": {}, \"cases\": {}, \"errors\": {}, \"max_ulps\": {}, \"max_bound_ulps\": {}}}",
                 s(r.family),
                 s(&r.method),
                 s(&r.inputs),
@@ -122,6 +122,7 @@ pub fn json(rows: &[Row]) -> String {
                 r.cases,
                 r.errors,
                 r.max_ulps.map_or("null".to_string(), num),
+                r.max_bound_ulps.map_or("null".to_string(), num),
             )
         })
         .collect();

@@ -135,6 +135,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
                 cases: checked as u64,
                 errors,
                 max_ulps: None,
+                max_bound_ulps: None,
             });
         }
         let pixels = truth.iter().flatten().filter(|&&b| b).count() as f64 / checked as f64;

@@ -7,14 +7,15 @@
 //! base plane each lies on, and the base disk's hit, in f64: only hits
 //! within a few ulps of the rim or the apex are uncertain there.
 
-use crate::framework::method;
-use crate::ray_family::{RayFamily, inputs, naive_first, parry_cast};
+use crate::ray_family::{
+    RayFamily, bounded, inputs, naive_first, parry_cast, quadratic_within, stable_first, unbounded,
+};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
-use exactray::query::ray::RayCast;
+use exactray::query::ray::{Precise, RayCast};
 use exactray::shape::Cone;
 use exactray::testing::{ConeRay, ConeRayClass, cone_ray_case};
-use exactray_oracle::line_oracle::Quadratic;
+use exactray_oracle::line_oracle::{Dyadic, Quadratic, dot3, sub3, v3};
 use glam::DVec3;
 
 #[derive(Clone)]
@@ -46,10 +47,15 @@ fn case(r: ConeRay) -> Case {
     }
 }
 
-fn oracle(c: &Case) -> Option<f64> {
+fn exact(c: &Case) -> Quadratic {
+    Quadratic::cone(c.o.into(), c.d.into(), c.apex.into(), c.axis.into(), c.r)
+}
+
+/// The exact first hit, rounded, and whether it lies on the base disk.
+fn first_hit(c: &Case) -> Option<(f64, bool)> {
     let (ap, a) = (c.apex, c.axis);
     let s = a.dot(a);
-    let ans = Quadratic::cone(c.o.into(), c.d.into(), ap.into(), a.into(), c.r).answer();
+    let ans = exact(c).answer();
     let at = |t: f64| c.o + c.d * t;
     let lateral = ans.roots.iter().copied().find(|&t| {
         let h = (at(t) - ap).dot(a);
@@ -63,13 +69,47 @@ fn oracle(c: &Case) -> Option<f64> {
             t >= 0.0 && radial.dot(radial) <= c.r * c.r * s
         });
     match (lateral, base) {
-        (Some(l), Some(b)) => Some(l.min(b)),
-        (l, b) => l.or(b),
+        (Some(l), Some(b)) if b < l => Some((b, true)),
+        (Some(l), _) => Some((l, false)),
+        (None, b) => b.map(|b| (b, true)),
     }
 }
 
+fn oracle(c: &Case) -> Option<f64> {
+    first_hit(c).map(|(t, _)| t)
+}
+
+/// Whether the exact first hit lies within `error` of `t`: a lateral
+/// root by the line oracle, the base plane's parameter `(|a|^2 - (o -
+/// apex) . a) / (d . a)` by exact dyadic signs.
+fn within(c: &Case, first: f64, t: f64, error: f64) -> bool {
+    let Some((_, on_base)) = first_hit(c) else {
+        return false;
+    };
+    if !on_base {
+        return quadratic_within(&exact(c), first, t, error);
+    }
+    if !(t.is_finite() && error.is_finite()) {
+        return error == f64::INFINITY;
+    }
+    let (o, d, ap, a) = (
+        v3(c.o.into()),
+        v3(c.d.into()),
+        v3(c.apex.into()),
+        v3(c.axis.into()),
+    );
+    let num = dot3(&a, &a).sub(&dot3(&sub3(&o, &ap), &a));
+    let den = dot3(&d, &a);
+    // The sign of t_exact - x, for t_exact = num / den.
+    let side = |x: &Dyadic| num.sub(&x.mul(&den)).sign() * den.sign();
+    let (t, e) = (Dyadic::from_f64(t), Dyadic::from_f64(error));
+    side(&t.sub(&e)) >= 0 && side(&t.add(&e)) <= 0
+}
+
+/// The textbook double cone's coefficients and the capped cone's hit
+/// from its lateral root (found by `solve`) and base disk, in `f64`.
 #[inline(always)]
-fn naive(c: &Case) -> Option<f64> {
+fn textbook(c: &Case, solve: fn(f64, f64, f64) -> Option<f64>) -> Option<f64> {
     let (ap, a) = (c.apex, c.axis);
     let (w, d) = (c.o - ap, c.d);
     let s = a.dot(a);
@@ -79,7 +119,7 @@ fn naive(c: &Case) -> Option<f64> {
     let qa = d.dot(d) - (1.0 + k) * q * q / s;
     let qb = 2.0 * (w.dot(d) - (1.0 + k) * p * q / s);
     let qc = w.dot(w) - (1.0 + k) * p * p / s;
-    let lateral = naive_first(qa, qb, qc).filter(|&t| {
+    let lateral = solve(qa, qb, qc).filter(|&t| {
         let h = (w + d * t).dot(a);
         (0.0..=s).contains(&h)
     });
@@ -94,6 +134,16 @@ fn naive(c: &Case) -> Option<f64> {
 }
 
 #[inline(always)]
+fn naive(c: &Case) -> Option<f64> {
+    textbook(c, naive_first)
+}
+
+#[inline(always)]
+fn stable(c: &Case) -> Option<f64> {
+    textbook(c, stable_first)
+}
+
+#[inline(always)]
 fn parry(c: &Case) -> Option<f64> {
     parry_cast(&parry3d_f64::shape::Cone::new(c.hh, c.r), c.c, c.o, c.d)
 }
@@ -103,12 +153,17 @@ pub fn family() -> RayFamily<Case> {
         name: "ray_cone",
         inputs: inputs(&ConeRayClass::ALL, ConeRayClass::name, cone_ray_case, case),
         oracle,
+        within,
         methods: vec![
-            method("exactray", |c: &Case| {
-                c.cone.cast_t(&c.ray, Interval::FORWARD)
+            bounded("exactray", |c: &Case| {
+                c.cone.cast_bounded(&c.ray, Interval::FORWARD)
             }),
-            method("naive", naive),
-            method("parry3d", parry),
+            bounded("exactray-precise", |c: &Case| {
+                Precise(c.cone).cast_bounded(&c.ray, Interval::FORWARD)
+            }),
+            unbounded("naive", naive),
+            unbounded("naive-stable", stable),
+            unbounded("parry3d", parry),
         ],
         skip: |_, _| false,
     }

@@ -2,11 +2,13 @@
 //! (ten coefficients). Peer: the textbook formula on coefficients
 //! evaluated in f64 (`naive`); parry3d has no general quadric.
 
-use crate::framework::method;
-use crate::ray_family::{RayFamily, first_forward, inputs, naive_first};
+use crate::ray_family::{
+    RayFamily, bounded, first_forward, inputs, naive_first, quadratic_within, stable_first,
+    unbounded,
+};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
-use exactray::query::ray::RayCast;
+use exactray::query::ray::{Precise, RayCast};
 use exactray::shape::Quadric;
 use exactray::testing::{QuadricRay, QuadricRayClass, quadric_ray_case};
 use exactray_oracle::line_oracle::Quadratic;
@@ -37,16 +39,21 @@ fn case(
     }
 }
 
+fn exact(c: &Case) -> Quadratic {
+    Quadratic::quadric(c.o.into(), c.d.into(), c.k)
+}
+
 fn oracle(c: &Case) -> Option<f64> {
-    let a = Quadratic::quadric(c.o.into(), c.d.into(), c.k).answer();
+    let a = exact(c).answer();
     if a.count.is_none() {
         return Some(0.0);
     }
     first_forward(&a.roots)
 }
 
+/// The textbook coefficients of `a t^2 + b t + c` in `f64`.
 #[inline(always)]
-fn naive(c: &Case) -> Option<f64> {
+fn coefficients(c: &Case) -> (f64, f64, f64) {
     let [a, b, cc, d, e, f, g, h, i, j] = c.k;
     let (o, v) = (c.o, c.d);
     let qa = a * v.x * v.x
@@ -72,11 +79,23 @@ fn naive(c: &Case) -> Option<f64> {
         + h * o.y
         + i * o.z
         + j;
+    (qa, qb, qc)
+}
+
+#[inline(always)]
+fn naive(c: &Case) -> Option<f64> {
+    let (qa, qb, qc) = coefficients(c);
     if qa == 0.0 {
         let t = -qc / qb;
         return (t >= 0.0).then_some(t);
     }
     naive_first(qa, qb, qc)
+}
+
+#[inline(always)]
+fn stable(c: &Case) -> Option<f64> {
+    let (qa, qb, qc) = coefficients(c);
+    stable_first(qa, qb, qc)
 }
 
 pub fn family() -> RayFamily<Case> {
@@ -89,11 +108,16 @@ pub fn family() -> RayFamily<Case> {
             case,
         ),
         oracle,
+        within: |c, first, t, error| quadratic_within(&exact(c), first, t, error),
         methods: vec![
-            method("exactray", |c: &Case| {
-                c.quadric.cast_t(&c.ray, Interval::FORWARD)
+            bounded("exactray", |c: &Case| {
+                c.quadric.cast_bounded(&c.ray, Interval::FORWARD)
             }),
-            method("naive", naive),
+            bounded("exactray-precise", |c: &Case| {
+                Precise(c.quadric).cast_bounded(&c.ray, Interval::FORWARD)
+            }),
+            unbounded("naive", naive),
+            unbounded("naive-stable", stable),
         ],
         skip: |_, _| false,
     }

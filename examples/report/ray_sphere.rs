@@ -3,11 +3,13 @@
 //! chapter 7 (`naive-stable`: the discriminant from the closest point to
 //! the centre, the second root by Vieta) and parry3d's `Ball` (f64 build).
 
-use crate::framework::method;
-use crate::ray_family::{RayFamily, first_forward, inputs, naive_first, parry_cast};
+use crate::ray_family::{
+    RayFamily, bounded, first_forward, inputs, naive_first, parry_cast, quadratic_within,
+    stable_circle_first, unbounded,
+};
 use exactray::interval::Interval;
 use exactray::query::ray::Ray;
-use exactray::query::ray::RayCast;
+use exactray::query::ray::{Precise, RayCast};
 use exactray::shape::Sphere;
 use exactray::testing::{SphereRay, SphereRayClass, sphere_ray_case};
 use exactray_oracle::line_oracle::Quadratic;
@@ -41,9 +43,12 @@ fn case(
     }
 }
 
+fn exact(c: &Case) -> Quadratic {
+    Quadratic::sphere(c.o.into(), c.d.into(), c.c.into(), c.r)
+}
+
 fn oracle(c: &Case) -> Option<f64> {
-    let a = Quadratic::sphere(c.o.into(), c.d.into(), c.c.into(), c.r).answer();
-    first_forward(&a.roots)
+    first_forward(&exact(c).answer().roots)
 }
 
 #[inline(always)]
@@ -52,22 +57,10 @@ fn naive(c: &Case) -> Option<f64> {
     naive_first(c.d.dot(c.d), 2.0 * w.dot(c.d), w.dot(w) - c.r * c.r)
 }
 
-/// Ray Tracing Gems ch. 7 (Haines, Günther, Akenine-Möller, "Precision
-/// Improvements for Ray/Sphere Intersection"), for unnormalized `d`.
+/// Ray Tracing Gems ch. 7's form ([`stable_circle_first`]).
 #[inline(always)]
 fn stable(c: &Case) -> Option<f64> {
-    let f = c.o - c.c;
-    let a = c.d.dot(c.d);
-    let b = -f.dot(c.d);
-    let l = f + c.d * (b / a);
-    let disc = a * (c.r * c.r - l.dot(l));
-    if disc < 0.0 {
-        return None;
-    }
-    let q = b + disc.sqrt().copysign(b);
-    let (t0, t1) = ((f.dot(f) - c.r * c.r) / q, q / a);
-    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-    [t0, t1].into_iter().find(|&t| t >= 0.0)
+    stable_circle_first(c.o - c.c, c.d, c.r)
 }
 
 #[inline(always)]
@@ -85,13 +78,17 @@ pub fn family() -> RayFamily<Case> {
             case,
         ),
         oracle,
+        within: |c, first, t, error| quadratic_within(&exact(c), first, t, error),
         methods: vec![
-            method("exactray", |c: &Case| {
-                c.sphere.cast_t(&c.ray, Interval::FORWARD)
+            bounded("exactray", |c: &Case| {
+                c.sphere.cast_bounded(&c.ray, Interval::FORWARD)
             }),
-            method("naive", naive),
-            method("naive-stable", stable),
-            method("parry3d", parry),
+            bounded("exactray-precise", |c: &Case| {
+                Precise(c.sphere).cast_bounded(&c.ray, Interval::FORWARD)
+            }),
+            unbounded("naive", naive),
+            unbounded("naive-stable", stable),
+            unbounded("parry3d", parry),
         ],
         skip: |_, _| false,
     }

@@ -159,6 +159,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
                 cases: cases.len() as u64,
                 errors,
                 max_ulps: Some(max),
+                max_bound_ulps: None,
             });
         }
     }
@@ -239,6 +240,7 @@ fn shared_edges(cfg: &Config, methods: &Methods) -> Vec<Row> {
                 cases: counted.len() as u64,
                 errors: misses as u64,
                 max_ulps: None,
+                max_bound_ulps: None,
             }
         })
         .collect()

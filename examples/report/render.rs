@@ -118,6 +118,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
                     cases: pixels as u64,
                     errors: differ,
                     max_ulps: None,
+                    max_bound_ulps: None,
                 });
             }
         }

@@ -431,6 +431,7 @@ fn closest_rows(
                 cases: cases.len() as u64,
                 errors,
                 max_ulps: Some(max_ulps),
+                max_bound_ulps: None,
             }
         })
         .collect();
@@ -490,6 +491,7 @@ fn brute_force_row(
         cases: cases.len() as u64,
         errors: errors as u64,
         max_ulps: None,
+        max_bound_ulps: None,
     }
 }
 
@@ -532,6 +534,7 @@ fn any_hit_rows(
                 .filter(|(c, w)| m.answer(c) != **w)
                 .count() as u64,
             max_ulps: None,
+            max_bound_ulps: None,
         })
         .collect()
 }
@@ -848,6 +851,7 @@ pub fn run_spawn(cfg: &Config) -> Vec<Row> {
                 cases: cases.len() as u64,
                 errors: errors as u64,
                 max_ulps: None,
+                max_bound_ulps: None,
             });
         }
     }

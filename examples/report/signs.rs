@@ -83,6 +83,7 @@ impl<C> SignFamily<C> {
                     cases: cases.len() as u64,
                     errors: errors as u64,
                     max_ulps: None,
+                    max_bound_ulps: None,
                 });
             }
         }

@@ -90,21 +90,35 @@ fn targets(rows: &[Row]) -> Vec<Target> {
     for inputs in ["far", "near-edge", "grazing"] {
         all.push(variant("exactray-exact", inputs, "", 0.0, true));
     }
-    // Issue 3, quadrics: sphere and cylinder with exact hit or miss within
-    // 1.5x the textbook formula on ordinary rays; every shape at least as
-    // fast as parry3d's cast; no wrong hit or miss on the hard rays.
-    all.extend([
-        t("ray_sphere", "uniform", "naive", 1.5, true),
-        t("ray_cylinder", "uniform", "naive", 1.5, true),
-        t("ray_sphere", "uniform", "parry3d", 1.0, false),
-        t("ray_cylinder", "uniform", "parry3d", 1.0, false),
-        t("ray_cone", "uniform", "parry3d", 1.0, false),
-    ]);
-    for inputs in ["grazing", "far", "tangent"] {
-        all.push(t("ray_sphere", inputs, "", 0.0, true));
+    // Issue 16, quadrics in tiers: the default cast (exact hit or miss,
+    // the stable formula's root with a certified bound) at most 1.2x Ray
+    // Tracing Gems' stable form and at most parry3d's time on `uniform`
+    // and `far` rays; no wrong hit or miss and no exact root outside the
+    // returned bound on any class, in either tier.
+    for family in ["ray_sphere", "ray_cylinder", "ray_cone", "ray_quadric"] {
+        for inputs in ["uniform", "far"] {
+            all.push(t(family, inputs, "naive-stable", 1.2, true));
+            if family != "ray_quadric" {
+                all.push(t(family, inputs, "parry3d", 1.0, true));
+            }
+        }
     }
-    for inputs in ["any-axis", "grazing", "far", "parallel"] {
-        all.push(t("ray_cylinder", inputs, "", 0.0, true));
+    let families: [(&str, &[&str]); 4] = [
+        ("ray_sphere", &["grazing", "tangent"]),
+        ("ray_cylinder", &["any-axis", "grazing", "parallel"]),
+        ("ray_cone", &[]),
+        ("ray_quadric", &["degenerate"]),
+    ];
+    for (family, classes) in families {
+        for &inputs in classes {
+            all.push(t(family, inputs, "", 0.0, true));
+        }
+        for inputs in ["uniform", "far"].iter().chain(classes) {
+            all.push(Target {
+                method: "exactray-precise",
+                ..t(family, inputs, "", 0.0, true)
+            });
+        }
     }
     all.extend(scene_targets(rows));
     all

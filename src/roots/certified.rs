@@ -31,7 +31,7 @@
 use crate::arith::fixed_int::FixedInt;
 use crate::arith::roundoff::U;
 use crate::arith::scaled_float::ScaledFloat;
-use crate::arith::std_or_libm::sqrt;
+use crate::arith::std_or_libm::{fma, sqrt};
 use crate::interval::Interval;
 use crate::roots::Roots;
 use crate::sign::Sign;
@@ -42,8 +42,9 @@ use glam::DVec3;
 /// values needs at most 128 bits with its sign.
 pub(crate) const SMALL_SPAN: i32 = 126;
 
-/// Half-form coefficients with bounds on the absolute errors of `A` and
-/// `B`, and the discriminant `disc ≈ B^2 - A C` with its bound `e_disc`.
+/// Half-form coefficients with bounds on the absolute errors of `A`, `B`
+/// and `C`, and the discriminant `disc ≈ B^2 - A C` with its bound
+/// `e_disc`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Coeffs {
     pub a: f64,
@@ -51,8 +52,44 @@ pub(crate) struct Coeffs {
     pub b: f64,
     pub e_b: f64,
     pub c: f64,
+    pub e_c: f64,
     pub disc: f64,
     pub e_disc: f64,
+}
+
+impl Coeffs {
+    /// The coefficients `A`, `B`, `C` with bounds on their errors, and the
+    /// discriminant as `fma(-A, C, B^2)`: `B^2` rounds once inside the
+    /// fma's addend, the fma once; the coefficients' errors propagate
+    /// through the products, to second order included (`e_b^2`, `e_a e_c`:
+    /// where `B` cancels they are the whole bound). The general quadric's
+    /// and the cone's form, whose coefficients carry no structure the
+    /// discriminant could use.
+    #[inline(always)]
+    pub(crate) fn with_product_discriminant(
+        (a, e_a): (f64, f64),
+        (b, e_b): (f64, f64),
+        (c, e_c): (f64, f64),
+    ) -> Coeffs {
+        let disc = fma(-a, c, b * b);
+        let e_disc = 2.0 * b.abs() * e_b
+            + a.abs() * e_c
+            + c.abs() * e_a
+            + e_b * e_b
+            + e_a * e_c
+            + U * b * b
+            + U * disc.abs();
+        Coeffs {
+            a,
+            e_a,
+            b,
+            e_b,
+            c,
+            e_c,
+            disc,
+            e_disc,
+        }
+    }
 }
 
 /// How far, in ulps, a certified root may lie from the exact root: with
@@ -86,8 +123,8 @@ pub(crate) trait Polynomial {
 }
 
 /// What a cast asks of a filtered stage: every root of the line
-/// ([`AllRoots`]) or only the first inside an interval ([`FirstIn`], which
-/// certifies only the roots it needs). `answer` gives `None` where the
+/// ([`AllRoots`]) or only the first inside an interval (`BoundedFirstIn`
+/// in `bounded.rs`, which certifies only the roots it needs). `answer` gives `None` where the
 /// filter cannot certify, and the caller runs the exact stage, whose roots
 /// `exact_answer` turns into the same kind of answer.
 pub(crate) trait Question: Copy {
@@ -114,25 +151,6 @@ impl Question for AllRoots {
     #[inline(always)]
     fn exact_answer(self, roots: Roots) -> Roots {
         roots
-    }
-}
-
-/// The smallest root inside an interval ([`certified_first`]), as
-/// [`super::first_in`] takes it from [`AllRoots`]' answer.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FirstIn(pub Interval);
-
-impl Question for FirstIn {
-    type Answer = Option<f64>;
-
-    #[inline(always)]
-    fn answer(self, k: &Coeffs, p: &impl Polynomial) -> Option<Option<f64>> {
-        certified_first(k, p, self.0)
-    }
-
-    #[inline(always)]
-    fn exact_answer(self, roots: Roots) -> Option<f64> {
-        super::first_in(roots, self.0)
     }
 }
 

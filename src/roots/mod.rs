@@ -27,8 +27,11 @@ use crate::arith::std_or_libm::{fma, sqrt};
 use crate::error::InputError;
 use crate::interval::Interval;
 
+pub(crate) mod bounded;
 pub(crate) mod certified;
 pub(crate) mod radial;
+
+pub use bounded::BoundedRoot;
 
 /// The real roots of a quadratic (or lower-degree) polynomial.
 #[derive(Clone, Copy, Debug, PartialEq)]

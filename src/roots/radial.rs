@@ -12,8 +12,8 @@
 
 use super::certified::{Coeffs, ETA, Polynomial, Question, in_filter_range, norm1};
 use crate::arith::error_free::{two_prod, two_sum};
-use crate::arith::roundoff::U;
-use crate::arith::std_or_libm::fma;
+use crate::arith::roundoff::{U, gamma};
+use crate::arith::std_or_libm::{fma, sqrt};
 use glam::DVec3;
 
 /// `|w + t d|^2 = rr`, with `w = wh + wl` to within `ew` (componentwise),
@@ -75,6 +75,9 @@ impl<const INEXACT: bool> Circle<INEXACT> {
         let b = w.dot(d);
         let e_b = nw * ed1 + ew1 * nd + 3.0 * U * nw * nd + ETA;
         let c = w.dot(w) - rr;
+        // From the errors of `w` and `rr`, the dot product's three
+        // roundings and the difference's one.
+        let e_c = 2.0 * nw * ew1 + ew1 * ew1 + err + 4.0 * U * (w.dot(w) + rr) + ETA;
         let cr = w.cross(d);
         // Summed over the components, |w_i d_j| + |w_j d_i| is at most
         // |w|_1 |d|_1, and so are the propagated errors.
@@ -90,6 +93,7 @@ impl<const INEXACT: bool> Circle<INEXACT> {
             b,
             e_b,
             c,
+            e_c,
             disc,
             e_disc,
         }
@@ -234,4 +238,167 @@ pub(crate) fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
         + ETA * (ah + al.abs() + e_al)
         + 4.0 * ETA;
     (ph, lo, err)
+}
+
+/// The values the default tier's coefficients of `|w + t d|^2 = rr`
+/// share, from rounded inputs (no double-double pairs, no FMA): `A = |d|^2`,
+/// `B = w . d`, `C = |w|^2 - rr`, `X = |w x d|^2`, `rr A` and the
+/// discriminant in Lagrange's form `rr A - X` (it does not cancel for far
+/// origins as `B^2 - A C` does), and the 1-norms of `w` and `d`.
+#[derive(Clone, Copy, Debug)]
+struct RoundedCircle {
+    a: f64,
+    b: f64,
+    c: f64,
+    x: f64,
+    ra: f64,
+    disc: f64,
+    nw: f64,
+    nd: f64,
+}
+
+impl RoundedCircle {
+    /// The values, or `None` where the magnitudes leave the filter's range
+    /// (as in [`circle_of`]): `|d|^2`, `|w|_1 |d|_1` and `rr |d|^2` within
+    /// `1e±120`, so `rr` itself is normal and no product of two of the
+    /// values the bounds combine leaves the normal range. A product of two
+    /// components may still underflow: each loses at most `2^-1075`, and
+    /// `ETA` (`2^-500`) per coefficient, carried through the same products
+    /// as the error it covers, bounds any number of those.
+    #[inline(always)]
+    fn of(w: DVec3, d: DVec3, rr: f64) -> Option<RoundedCircle> {
+        let (nw, nd) = (norm1(w), norm1(d));
+        let a = d.dot(d);
+        let ra = rr * a;
+        if !(in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(ra)) {
+            return None;
+        }
+        let cr = w.cross(d);
+        let x = cr.dot(cr);
+        Some(RoundedCircle {
+            a,
+            b: w.dot(d),
+            c: w.dot(w) - rr,
+            x,
+            ra,
+            disc: ra - x,
+            nw,
+            nd,
+        })
+    }
+
+    /// A bound on `X`'s error given `E`, the 1-norm of `w x d`'s error
+    /// vector `δ`: `X` moves by `sum_k δ_k (2 x_k + δ_k)`, at most `2 M E +
+    /// E^2` for `M >= |w x d|_2` (Cauchy–Schwarz), and rounds within
+    /// `gamma(3) X`. Where the computed discriminant is positive, `|w x
+    /// d|^2 < rr |d|^2`, so `M = r_up |d|_1` for `r_up >= sqrt(rr)`: a bound
+    /// of the size of the radius, not of `|w|`, which keeps far origins'
+    /// hits tight; elsewhere `M = sqrt(X)` (one square root, which a hit
+    /// spends on its roots instead). `M` is within `gamma(7)` of a bound on
+    /// the exact norm (`|w x d|^2 <= X (1 + gamma(3))`, `X < rr A`, `rr` and
+    /// `A` rounded), which the discriminant's margin covers.
+    #[inline(always)]
+    fn e_x(&self, e_cr: f64, r_up: f64) -> f64 {
+        let m = if self.disc > 0.0 {
+            r_up * self.nd
+        } else {
+            sqrt(self.x)
+        };
+        2.0 * m * e_cr + e_cr * e_cr + gamma(3) * self.x
+    }
+}
+
+/// The margin of the discriminant's bound: its own roundings and `M`'s
+/// (see [`RoundedCircle::e_x`]).
+const DISC_MARGIN: f64 = 1.0 + gamma(16);
+
+/// The margin of the other bounds: their own roundings and the computed
+/// norms' (each within `gamma(2)` of the exact one of the computed vector).
+const OWN_MARGIN: f64 = 1.0 + gamma(8);
+
+/// The default tier's coefficients of the sphere's `|w + t d|^2 = r^2`
+/// (also the axis-aligned cylinder's, in its two other coordinates): `w`
+/// rounded once per component (`|δw|_1 <= u |w|_1`), `d` exact, `r^2`
+/// rounded once. The bounds of [`rounded_circle`] with these errors,
+/// collected (`P = |w|_1 |d|_1`): `e_A = gamma(3) A`; `e_B = gamma(4) P`;
+/// `e_C = gamma(7) (|w|_1^2 + r^2)` (from `2 u |w|_1^2 + u^2 |w|_1^2 + u
+/// r^2 + gamma(4) (|w|_1^2 + r^2)`); `E = gamma(4) P`; the discriminant's
+/// `gamma(5) r^2 A + r^2 ETA + e_X + u |disc|` (from `A u r^2 + r^2 e_A +
+/// u r^2 A` and the difference's rounding; `r^2 ETA` carries `e_A`'s
+/// slack for underflow).
+#[inline(always)]
+pub(crate) fn rounded_sphere(w: DVec3, d: DVec3, r: f64) -> Option<Coeffs> {
+    let rr = r * r;
+    let k = RoundedCircle::of(w, d, rr)?;
+    let p = k.nw * k.nd;
+    let e_cr = gamma(4) * p + 2.0 * ETA;
+    let e_disc =
+        (gamma(5) * k.ra + rr * ETA + k.e_x(e_cr, r) + U * k.disc.abs()) * DISC_MARGIN + ETA;
+    Some(Coeffs {
+        a: k.a,
+        e_a: gamma(3) * k.a * OWN_MARGIN + ETA,
+        b: k.b,
+        e_b: gamma(4) * p * OWN_MARGIN + ETA,
+        c: k.c,
+        e_c: gamma(7) * (k.nw * k.nw + rr) * OWN_MARGIN + ETA,
+        disc: k.disc,
+        e_disc,
+    })
+}
+
+/// The default tier's coefficients of `|w + t d|^2 = rr` from inputs
+/// rounded a few times, with bounds: the exact `w` within `ew1` of the
+/// given one in the 1-norm, the exact `d` within `ed1`, the exact `rr`
+/// within `err`, and `r_up` at least `sqrt(rr)` (the general cylinder's
+/// projections).
+///
+/// Error bounds, first order, in 1-norms as in `Circle::coeffs` (Higham,
+/// *Accuracy and Stability*, ch. 3: a sum of `n` rounded products is
+/// within `gamma(n)` of the sum of their magnitudes): an input error
+/// `δx_i` moves a product `x_i y_j` by `|δx_i| |y_j|`, summed over the
+/// terms at most `|δx|_1 |y|_1`; with `P = |w|_1 |d|_1`:
+/// - `A = |d|^2`: `2 |d|_1 ed1 + ed1^2 + gamma(3) A`;
+/// - `B = w . d`: `|w|_1 ed1 + ew1 |d|_1 + ew1 ed1 + gamma(3) P`;
+/// - `C = |w|^2 - rr`: `2 |w|_1 ew1 + ew1^2 + err + gamma(4) (|w|_1^2 +
+///   rr)` (three roundings in the dot product, one in the difference;
+///   `|w|^2 <= |w|_1^2`);
+/// - `w x d`: the 1-norm of its error vector is at most `E = ew1 |d|_1 +
+///   |w|_1 ed1 + ew1 ed1 + gamma(3) P` (two products and a difference per
+///   component, and `sum_k |w_i d_j| + |w_j d_i| <= P`), and `X`'s error
+///   follows ([`RoundedCircle::e_x`]);
+/// - the discriminant, two roundings: `A err + rr e_a + err e_a + e_X + u
+///   (rr A + |disc|)`.
+///
+/// `None` outside the filter's range ([`RoundedCircle::of`]); the caller's
+/// precise tier decides there.
+#[inline(always)]
+pub(crate) fn rounded_circle(
+    w: DVec3,
+    ew1: f64,
+    d: DVec3,
+    ed1: f64,
+    (rr, err, r_up): (f64, f64, f64),
+) -> Option<Coeffs> {
+    let k = RoundedCircle::of(w, d, rr)?;
+    let (nw, nd) = (k.nw, k.nd);
+    let p = nw * nd;
+    let e_a = (2.0 * nd * ed1 + ed1 * ed1 + gamma(3) * k.a) * OWN_MARGIN + ETA;
+    let e_cr = nw * ed1 + ew1 * nd + ew1 * ed1 + gamma(3) * p;
+    let e_disc = (k.a * err
+        + rr * e_a
+        + err * e_a
+        + k.e_x(e_cr + 2.0 * ETA, r_up)
+        + U * (k.ra + k.disc.abs()))
+        * DISC_MARGIN
+        + ETA;
+    Some(Coeffs {
+        a: k.a,
+        e_a,
+        b: k.b,
+        e_b: e_cr * OWN_MARGIN + ETA,
+        c: k.c,
+        e_c: (2.0 * nw * ew1 + ew1 * ew1 + err + gamma(4) * (nw * nw + rr)) * OWN_MARGIN + ETA,
+        disc: k.disc,
+        e_disc,
+    })
 }

@@ -12,6 +12,7 @@ use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
 use crate::query::ray::{Hit, Ray, RayCast, TriangleTest, Watertight};
+use crate::roots::BoundedRoot;
 use crate::shape::{Aabb, Bounded, CappedCylinder, Cone, Cylinder, Disk, Plane, Quadric, Sphere};
 use alloc::vec::Vec;
 use core::marker::PhantomData;
@@ -75,6 +76,12 @@ impl RayCast for AnalyticShape {
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         each_shape!(self, s => s.cast(ray, range))
+    }
+
+    /// The shape's own `cast_bounded`.
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        each_shape!(self, s => s.cast_bounded(ray, range))
     }
 
     /// The shape's own `cast_t`.

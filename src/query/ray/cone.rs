@@ -1,7 +1,7 @@
 //! Ray against [`Cone`]: exact root count, accurate roots.
 
-use super::point_error::{dot_error, quotient_t_error, root_t_error};
-use super::{Hit, RayCast, unit_or};
+use super::point_error::dot_error;
+use super::{Hit, Precise, RayCast, unit_or};
 use crate::arith::error_free::exact_difference;
 use crate::arith::exponent::{Grain, pow2, scale_pow2, unit_scale};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3, limbs_of_degree};
@@ -10,10 +10,11 @@ use crate::arith::roundoff::{U, gamma};
 use crate::arith::std_or_libm::fma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::Roots;
+use crate::roots::bounded::{Place, Tier, both_bounded, precise, quotient_error};
 use crate::roots::certified::{
     AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
 };
+use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Cone;
 use glam::DVec3;
 
@@ -172,10 +173,7 @@ impl ScaledLine {
     /// underflows loses at most `2^-1075` and later factors do not grow it:
     /// `ETA` (`2^-500`) per coefficient covers them.
     ///
-    /// The discriminant `B^2 - A C` rounds twice (`B^2`, then the fma);
-    /// the coefficients' errors propagate through the products, to second
-    /// order included (`e_b^2`, `e_a e_c`: where `B` is near zero they are
-    /// the whole bound).
+    /// The discriminant and its bound: [`Coeffs::with_product_discriminant`].
     #[inline(always)]
     fn coeffs(&self) -> Option<Coeffs> {
         let (w, d, a) = (self.wh, self.d, self.a);
@@ -200,23 +198,11 @@ impl ScaledLine {
             gamma(26) * mb + ETA,
             gamma(28) * mc + ETA,
         );
-        let disc = fma(-a_, c, b * b);
-        let e_disc = 2.0 * b.abs() * e_b
-            + a_.abs() * e_c
-            + c.abs() * e_a
-            + e_b * e_b
-            + e_a * e_c
-            + U * b * b
-            + U * disc.abs();
-        Some(Coeffs {
-            a: a_,
-            e_a,
-            b,
-            e_b,
-            c,
-            disc,
-            e_disc,
-        })
+        Some(Coeffs::with_product_discriminant(
+            (a_, e_a),
+            (b, e_b),
+            (c, e_c),
+        ))
     }
 }
 
@@ -364,27 +350,80 @@ fn exact_in<
 /// Which surface of a cone a cast's first crossing lies on.
 #[derive(Clone, Copy)]
 enum Crossing {
-    /// The lateral surface, at `t`.
-    Lateral(f64),
+    /// The lateral surface, at a bounded root.
+    Lateral(BoundedRoot),
     /// The base disk, at `t = num / (d . a)`.
     Base { t: f64, num: f64 },
 }
 
+/// The default tier's lateral roots: both, bounded, in exact order
+/// (`Some(None)`: no real root), computed with hardware FMA where the CPU
+/// has it; `None` where the precise tier decides.
+struct BoundedLateral<'a> {
+    line: &'a ScaledLine,
+}
+
+impl FmaKernel for BoundedLateral<'_> {
+    type Output = Option<Option<[BoundedRoot; 2]>>;
+
+    #[inline(always)]
+    fn run(&self) -> Self::Output {
+        both_bounded(&self.line.coeffs()?)
+    }
+}
+
 impl Cone {
-    /// The first crossing in `range` on the cone's own nappe (below the cap
-    /// for a capped cone) or on its base disk.
-    fn first_crossing(&self, ray: &Ray, range: Interval) -> Option<Crossing> {
+    /// Both lateral roots of the line in the default tier, bounded and in
+    /// exact order, scaled back from the scaled line: `t` and its bound by
+    /// the same power of two, exact unless the result is subnormal, where
+    /// each loses at most `2^-1074` (`scale_pow2`), added to the bound.
+    /// `None` where the precise tier decides.
+    fn bounded_line_roots(&self, ray: &Ray) -> Option<Option<[BoundedRoot; 2]>> {
+        let line = self.scaled(ray)?;
+        let found = with_fma(&BoundedLateral { line: &line })?;
+        Some(found.map(|roots| {
+            roots.map(|BoundedRoot { t, error }| BoundedRoot {
+                t: scale_pow2(t, line.back),
+                error: scale_pow2(error, line.back) + f64::from_bits(2),
+            })
+        }))
+    }
+
+    /// The first lateral crossing in `range` on the cone's own nappe (below
+    /// the cap for a capped cone): in the default tier, the first bounded
+    /// root certified inside `range` where every root's place is decided;
+    /// otherwise the precise tier's first root that `range` admits.
+    fn lateral_first(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<BoundedRoot> {
         let a = self.axis;
-        let on_lateral = |t: f64| {
+        let on_cone = |t: f64| {
             // At the axis's scale (`rim.rs`).
             let (h, s) = super::rim::heights(ray.at(t) - self.apex, a);
-            range.admits(t) && h >= 0.0 && (!self.capped || h <= s)
+            h >= 0.0 && (!self.capped || h <= s)
         };
-        let lateral = match self.line_roots(ray) {
-            Roots::One(t) => on_lateral(t).then_some(t),
-            Roots::Two(t1, t2) => [t1, t2].into_iter().find(|&t| on_lateral(t)),
+        if tier == Tier::Default
+            && let Some(found) = self.bounded_line_roots(ray)
+        {
+            let roots = found?;
+            let places = roots.map(|root| root.place(range));
+            if !places.contains(&Place::Undecided) {
+                return (0..2)
+                    .find(|&i| places[i] == Place::Inside && on_cone(roots[i].t))
+                    .map(|i| roots[i]);
+            }
+        }
+        let lateral = |t: f64| range.admits(t) && on_cone(t);
+        match self.line_roots(ray) {
+            Roots::One(t) => lateral(t).then(|| precise(t)),
+            Roots::Two(t1, t2) => [t1, t2].into_iter().find(|&t| lateral(t)).map(precise),
             Roots::None | Roots::All => None,
-        };
+        }
+    }
+
+    /// The first crossing in `range` on the cone's own nappe (below the cap
+    /// for a capped cone) or on its base disk.
+    fn first_crossing(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Crossing> {
+        let a = self.axis;
+        let lateral = self.lateral_first(ray, range, tier);
         // The base plane's crossing with the axis at its own scale
         // (`rim.rs`): `a . â` for `|a|^2`.
         let ah = super::rim::unit_axis(a);
@@ -397,44 +436,73 @@ impl Cone {
                     && super::rim::within_axis_radius(ray.at(t) - self.apex, a, self.radius)
             });
         match (lateral, base) {
-            (Some(tl), Some((tb, num))) if tb < tl => Some(Crossing::Base { t: tb, num }),
-            (Some(tl), _) => Some(Crossing::Lateral(tl)),
+            (Some(root), Some((tb, num))) if tb < root.t => Some(Crossing::Base { t: tb, num }),
+            (Some(root), _) => Some(Crossing::Lateral(root)),
             (None, Some((t, num))) => Some(Crossing::Base { t, num }),
             (None, None) => None,
         }
+    }
+
+    /// The first crossing in `range`, bounded, and whether it lies on the
+    /// base disk.
+    fn first_bounded(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<(BoundedRoot, bool)> {
+        Some(match self.first_crossing(ray, range, tier)? {
+            Crossing::Lateral(root) => (root, false),
+            Crossing::Base { t, num } => {
+                // The base plane's level |a|^2 (`a . â`) within gamma(4) of it,
+                // the origin's height within its dot product's bound, and
+                // `num` rounds once more.
+                // All with the scaled axis `â` of `first_crossing`.
+                let a = self.axis;
+                let ah = super::rim::unit_axis(a);
+                let e_h = dot_error(ray.origin() - self.apex, ah);
+                let e_num = e_h + gamma(4) * a.dot(ah) + U * num.abs() * (1.0 + 2.0 * U);
+                let dh = ray.direction().dot(ah);
+                let error = quotient_error(t, e_num, dh, dot_error(ray.direction(), ah));
+                (BoundedRoot { t, error }, true)
+            }
+        })
+    }
+
+    /// The first hit in `range` from `tier`'s lateral roots.
+    fn cast_tier(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Hit> {
+        let (root, on_base) = self.first_bounded(ray, range, tier)?;
+        let normal = if on_base {
+            self.axis.normalize()
+        } else {
+            self.normal_at(ray.at(root.t), -ray.direction())
+        };
+        Some(Hit::at(ray, root.t, root.error, normal))
     }
 }
 
 impl RayCast for Cone {
     /// The first hit in `range` on the cone's own nappe (`(x - apex) . axis
     /// >= 0`), below the cap for a capped cone, or on the base disk (normal
-    /// `+axis`). Nappe, cap and rim membership are decided in `f64`.
+    /// `+axis`). The lateral roots come from the default tier (exact count,
+    /// the stable formula's root with its a-priori bound); nappe, cap and
+    /// rim membership are decided in `f64`.
+    #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let a = self.axis;
-        Some(match self.first_crossing(ray, range)? {
-            Crossing::Lateral(t) => {
-                let normal = self.normal_at(ray.at(t), -ray.direction());
-                Hit::at(ray, t, root_t_error(t), normal)
-            }
-            Crossing::Base { t, num } => {
-                // The base plane's level |a|^2 (`a . â`) within gamma(4) of it,
-                // the origin's height within its dot product's bound, and
-                // `num` rounds once more.
-                // All with the scaled axis `â` of `first_crossing`.
-                let ah = super::rim::unit_axis(a);
-                let e_h = dot_error(ray.origin() - self.apex, ah);
-                let e_num = e_h + gamma(4) * a.dot(ah) + U * num.abs() * (1.0 + 2.0 * U);
-                let dh = ray.direction().dot(ah);
-                let et = quotient_t_error(t, e_num, dh, dot_error(ray.direction(), ah));
-                Hit::at(ray, t, et, a.normalize())
-            }
-        })
+        self.cast_tier(ray, range, Tier::Default)
     }
 
-    /// [`RayCast::cast`]'s `t`, without its normal and point error.
-    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        Some(match self.first_crossing(ray, range)? {
-            Crossing::Lateral(t) | Crossing::Base { t, .. } => t,
-        })
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        Some(self.first_bounded(ray, range, Tier::Default)?.0)
+    }
+}
+
+impl RayCast for Precise<Cone> {
+    /// [`Cone`]'s cast, its lateral `t` within 4 ulps of the correctly
+    /// rounded root ([`Cone::line_roots`]' accuracy).
+    #[inline]
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        self.0.cast_tier(ray, range, Tier::Precise)
+    }
+
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        Some(self.0.first_bounded(ray, range, Tier::Precise)?.0)
     }
 }

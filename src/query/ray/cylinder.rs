@@ -1,8 +1,8 @@
 //! Ray against [`Cylinder`] and [`CappedCylinder`]: exact root count for
 //! the infinite side, accurate roots.
 
-use super::point_error::{dot_error, quotient_t_error, root_t_error};
-use super::{Hit, RayCast, hit_at, unit_or};
+use super::point_error::dot_error;
+use super::{Hit, Precise, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{exact_difference, two_prod, two_sum};
 use crate::arith::exponent::Grain;
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3};
@@ -10,11 +10,14 @@ use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::Roots;
-use crate::roots::certified::{
-    AllRoots, ETA, FirstIn, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
+use crate::roots::bounded::{
+    BoundedFirstIn, Place, Tier, both_bounded, first_bounded, precise, quotient_error,
 };
-use crate::roots::radial::{Circle, circle_of};
+use crate::roots::certified::{
+    AllRoots, Coeffs, ETA, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
+};
+use crate::roots::radial::{Circle, circle_of, rounded_circle, rounded_sphere};
+use crate::roots::{BoundedRoot, Roots};
 use crate::shape::{CappedCylinder, Cylinder};
 use glam::DVec3;
 
@@ -197,31 +200,122 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
     )
 }
 
+impl Cylinder {
+    /// The default tier's coefficients, from rounded inputs
+    /// ([`rounded_circle`]). `w = o - p` rounds once per component (`|δw|_1
+    /// <= u |w|_1`). Along a coordinate axis, the circle in the other two
+    /// coordinates with the sphere's inputs. Otherwise `u = w x a` and `v =
+    /// d x a`: each component two products and a difference (`gamma(2)`
+    /// of `|w_i a_j| + |w_j a_i|`, summed over the components at most
+    /// `|w|_1 |a|_1`), `u` also carrying `w`'s error (`u |w|_1 |a|_1`);
+    /// `R^2 = r^2 |a|^2` from the pair computed when the cylinder was built,
+    /// and `R <= r |a|_1`.
+    #[inline(always)]
+    fn rounded_coeffs(&self, ray: &Ray) -> Option<Coeffs> {
+        let (w, d) = (ray.origin() - self.point, ray.direction());
+        if let Some(k) = self.aligned {
+            let drop = |mut v: DVec3| {
+                v[k] = 0.0;
+                v
+            };
+            return rounded_sphere(drop(w), drop(d), self.radius);
+        }
+        let a = self.axis;
+        let na = norm1(a);
+        let (u, v) = (w.cross(a), d.cross(a));
+        let (rh, rl, err) = self.scaled_rr;
+        rounded_circle(
+            u,
+            gamma(3) * norm1(w) * na,
+            v,
+            gamma(2) * norm1(d) * na,
+            (rh, err + rl.abs(), self.radius * na),
+        )
+    }
+
+    /// The precise tier's first root in `range`, bounded.
+    #[inline]
+    fn precise_first(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.solve(ray, BoundedFirstIn(range, Tier::Precise))
+    }
+
+    /// Both roots of the line in the default tier, bounded and in exact
+    /// order; `Some(None)` for a certified miss; `None` where the precise
+    /// tier decides (a near-tangent or parallel line).
+    #[inline]
+    fn bounded_line_roots(&self, ray: &Ray) -> Option<Option<[BoundedRoot; 2]>> {
+        both_bounded(&self.rounded_coeffs(ray)?)
+    }
+}
+
 impl RayCast for Cylinder {
     /// The first hit in `range`; the normal points away from the axis. A
     /// line lying on the surface hits at the point of `range` nearest
     /// `t = 0`.
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        hit_at(self.cast_t(ray, range), ray, |point| {
+        hit_at(self.cast_bounded(ray, range), ray, |point| {
             self.normal_at(point, -ray.direction())
         })
     }
 
+    /// The default tier, as [`Sphere`](crate::shape::Sphere)'s: hit or
+    /// miss exact, `t` from the stable formula with an a-priori bound.
     #[inline]
-    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        self.solve(ray, FirstIn(range))
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        match self
+            .rounded_coeffs(ray)
+            .and_then(|k| first_bounded(&k, range))
+        {
+            Some(first) => first,
+            None => self.precise_first(ray, range),
+        }
     }
 }
 
-impl RayCast for CappedCylinder {
-    /// The first hit in `range` on the side (between the end planes) or on
-    /// an end disk (normal `-axis` at the base, `+axis` at the top). The
-    /// side's roots carry [`Cylinder::line_roots`]' guarantees; whether a
-    /// hit near the rim belongs to the side or a disk, and whether a ray
-    /// grazing the rim hits, are decided in `f64` (within a few ulps of the
-    /// rim).
+impl RayCast for Precise<Cylinder> {
+    /// [`Cylinder`]'s cast, its `t` within 4 ulps of the correctly rounded
+    /// root ([`Cylinder::line_roots`]' accuracy).
+    #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        hit_at(self.cast_bounded(ray, range), ray, |point| {
+            self.0.normal_at(point, -ray.direction())
+        })
+    }
+
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.0.precise_first(ray, range)
+    }
+}
+
+impl CappedCylinder {
+    /// The side's roots that a cast considers, bounded: in the default tier
+    /// those whose bound lies inside `range`, where every root's place is
+    /// decided; otherwise the precise tier's (which the cast checks
+    /// against `range` itself). A line on the infinite side has no side
+    /// crossing.
+    fn side_roots(&self, ray: &Ray, range: Interval, tier: Tier) -> [Option<BoundedRoot>; 2] {
+        if tier == Tier::Default
+            && let Some(found) = self.side.bounded_line_roots(ray)
+        {
+            let Some(roots) = found else {
+                return [None, None];
+            };
+            let places = roots.map(|root| root.place(range));
+            if !places.contains(&Place::Undecided) {
+                return [0, 1].map(|i| (places[i] == Place::Inside).then_some(roots[i]));
+            }
+        }
+        match self.side.line_roots(ray) {
+            Roots::One(t) => [Some(precise(t)), None],
+            Roots::Two(t1, t2) => [Some(precise(t1)), Some(precise(t2))],
+            Roots::None | Roots::All => [None, None],
+        }
+    }
+
+    /// The first hit in `range`, with the side's roots from `tier`.
+    fn cast_tier(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Hit> {
         let side = &self.side;
         let a = side.axis;
         let mut best: Option<Hit> = None;
@@ -241,16 +335,10 @@ impl RayCast for CappedCylinder {
             (0.0..=aa).contains(&h)
         };
         let side_normal = |x: DVec3| side.normal_at(x, -ray.direction());
-        match side.line_roots(ray) {
-            Roots::One(t) if on_side(t) => consider(t, root_t_error(t), &side_normal),
-            Roots::Two(t1, t2) => {
-                for t in [t1, t2] {
-                    if on_side(t) {
-                        consider(t, root_t_error(t), &side_normal);
-                    }
-                }
+        for root in self.side_roots(ray, range, tier).into_iter().flatten() {
+            if on_side(root.t) {
+                consider(root.t, root.error, &side_normal);
             }
-            _ => {}
         }
         // The end disks: h(t) = (o - p) . a + t d . a equals 0 or |a|^2,
         // with the axis at its own scale (`rim.rs`) so that `|a|^2` stays
@@ -272,12 +360,34 @@ impl RayCast for CappedCylinder {
                     // it (gamma(4) of the computed `aa`), `h0` within its dot
                     // product's bound, and `num` rounds once more.
                     let e_num = e_h0 + gamma(4) * level + U * num.abs() * (1.0 + 2.0 * U);
-                    consider(t, quotient_t_error(t, e_num, dh, e_dh), &|_| {
+                    consider(t, quotient_error(t, e_num, dh, e_dh), &|_| {
                         a.normalize() * sign
                     });
                 }
             }
         }
         best
+    }
+}
+
+impl RayCast for CappedCylinder {
+    /// The first hit in `range` on the side (between the end planes) or on
+    /// an end disk (normal `-axis` at the base, `+axis` at the top). The
+    /// side's roots come from the default tier (the stable formula's root
+    /// with its a-priori bound, [`Cylinder`]'s); whether a hit near the rim
+    /// belongs to the side or a disk, and whether a ray grazing the rim
+    /// hits, are decided in `f64` (within a few ulps of the rim).
+    #[inline]
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        self.cast_tier(ray, range, Tier::Default)
+    }
+}
+
+impl RayCast for Precise<CappedCylinder> {
+    /// [`CappedCylinder`]'s cast with the side's roots within 4 ulps of
+    /// the correctly rounded ones ([`Cylinder::line_roots`]).
+    #[inline]
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        self.0.cast_tier(ray, range, Tier::Precise)
     }
 }

@@ -15,7 +15,7 @@ use crate::arith::exponent::unit_pow2;
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
-use crate::roots::Roots;
+use crate::roots::{BoundedRoot, Roots};
 use glam::DVec3;
 
 mod triangle;
@@ -104,6 +104,9 @@ pub struct Hit {
     /// `point_error.rs`); infinite where a cast's `t` carries no certified
     /// bound (a `t` beyond `f64`'s range).
     pub error: DVec3,
+    /// A certified bound on `|t - t_exact|`, the parameter's own error
+    /// ([`BoundedRoot::error`]); infinite where no bound is certified.
+    pub t_error: f64,
 }
 
 impl Hit {
@@ -116,6 +119,7 @@ impl Hit {
             point,
             normal,
             error: point_error::point_error(ray, t, point, et),
+            t_error: et,
         }
     }
 
@@ -133,11 +137,22 @@ pub trait RayCast {
     /// hit at an infinite `t` (see the module's policy).
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit>;
 
+    /// The `t` of [`RayCast::cast`]'s hit with its certified bound
+    /// ([`Hit::t_error`]), without the point and normal: the exact
+    /// parameter of the crossing lies within `error` of `t`.
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.cast(ray, range).map(|hit| BoundedRoot {
+            t: hit.t,
+            error: hit.t_error,
+        })
+    }
+
     /// The `t` of [`RayCast::cast`]'s hit, without its point and normal:
     /// what a closest-hit loop compares before it shades the winner.
     #[inline]
     fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        self.cast(ray, range).map(|hit| hit.t)
+        self.cast_bounded(ray, range).map(|hit| hit.t)
     }
 
     /// Whether the ray meets the shape for some `t` inside `range` (a shadow
@@ -192,24 +207,50 @@ mod quadric;
 mod rim;
 mod sphere;
 
-/// The hit at `t` (a cast's first root inside its range), its normal from
-/// the hit point: what the quadrics' casts share.
+/// The hit at a bounded root (a cast's first root inside its range), its
+/// normal from the hit point: what the quadrics' casts share.
 #[inline(always)]
 pub(crate) fn hit_at(
-    t: Option<f64>,
+    root: Option<BoundedRoot>,
     ray: &Ray,
     normal: impl FnOnce(DVec3) -> DVec3,
 ) -> Option<Hit> {
-    let t = t?;
-    let point = ray.at(t);
+    let BoundedRoot { t, error } = root?;
+    let hit = Hit::at(ray, t, error, DVec3::ZERO);
     Some(Hit {
-        t,
-        point,
-        normal: normal(point),
-        // The quadrics' roots carry their `line_roots` bounds.
-        error: point_error::point_error(ray, t, point, point_error::root_t_error(t)),
+        normal: normal(hit.point),
+        ..hit
     })
 }
+
+/// The precise tier of a quadric's cast: `Precise(shape).cast(..)` returns
+/// the same hit or miss as `shape.cast(..)` on every input (both decide it
+/// exactly, up to a root within a few ulps of an end of the range, where
+/// both decide on the precise root), with every returned root within 4
+/// ulps of the correctly rounded exact root (the roots of
+/// [`LineRoots::line_roots`], certified a posteriori or from the exact
+/// stage), where the default tier returns the stable formula's root and
+/// its a-priori bound ([`Hit::t_error`]). Implemented for [`Sphere`],
+/// [`Cylinder`], [`CappedCylinder`], [`Cone`] and [`Quadric`].
+///
+/// ```
+/// use exactray::prelude::*;
+/// use exactray::query::ray::Precise;
+/// let s = Sphere::new([0.0, 0.0, 0.0], 1.0).unwrap();
+/// let ray = Ray::new([-1e8, 0.5, 0.0], [1.0, 0.0, 0.0]).unwrap();
+/// let fast = s.cast_bounded(&ray, Interval::FORWARD).unwrap();
+/// let precise = Precise(s).cast_bounded(&ray, Interval::FORWARD).unwrap();
+/// // Both certified; the exact root lies within each bound.
+/// assert!((fast.t - precise.t).abs() <= fast.error + precise.error);
+/// ```
+///
+/// [`Sphere`]: crate::shape::Sphere
+/// [`Cylinder`]: crate::shape::Cylinder
+/// [`CappedCylinder`]: crate::shape::CappedCylinder
+/// [`Cone`]: crate::shape::Cone
+/// [`Quadric`]: crate::shape::Quadric
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Precise<S>(pub S);
 
 /// `v` normalized, or `fallback` normalized when `v` is zero (a point
 /// sphere, a cone's apex, the all-zero quadric). A vector whose squared

@@ -1,9 +1,10 @@
 //! Ray against [`Plane`] and [`Disk`].
 
-use super::point_error::{dot_error, quotient_t_error};
+use super::point_error::dot_error;
 use super::{Hit, RayCast};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
+use crate::roots::bounded::quotient_error;
 use crate::shape::{Disk, Plane};
 
 impl Plane {
@@ -30,7 +31,7 @@ impl RayCast for Plane {
         let t = self.line_parameter(ray).filter(|&t| range.admits(t))?;
         // `t = fl(num / den)` with both dot products' errors bounded.
         let n = self.normal;
-        let et = quotient_t_error(
+        let et = quotient_error(
             t,
             dot_error(self.point - ray.origin(), n),
             ray.direction().dot(n),

@@ -11,24 +11,13 @@
 //! products that underflow (each off by at most `2^-1075`).
 
 use super::Ray;
-use crate::arith::roundoff::{U, gamma};
+use crate::arith::roundoff::gamma;
 use glam::DVec3;
 
 /// Absolute slack for underflow: a bound's own products, and the
 /// point's `d_k t`, may each fall below the normal range and lose up to
 /// `2^-1075`; eight of them stay below `2^-1072`.
 const UNDERFLOW: f64 = f64::from_bits(4); // 2^-1072
-
-/// `|t - t_exact|` for a root that is within 4 ulps of the correctly
-/// rounded root (the certified stage) or within 5 ulps of the exact root
-/// (the exact stage's first-order bound), the quadrics' casts: an ulp of a
-/// normal `t` is at most `2u |t|`, so either is within `12u |t_exact|`,
-/// and `16u |t_exact| <= gamma(16) |t|` leaves room for the second-order
-/// terms; a subnormal root's ulps are `2^-1074` each.
-#[inline]
-pub(crate) fn root_t_error(t: f64) -> f64 {
-    gamma(16) * t.abs() + f64::from_bits(16)
-}
 
 /// `|t - t_exact|` for a `t` within `4u |t_exact|` of the exact one (the
 /// exact triangle's plane parameter, `EXACT_T_ULPS`): `4u |t_exact| <=
@@ -47,24 +36,6 @@ pub(crate) fn exact_t_error(t: f64) -> f64 {
 #[inline]
 pub(crate) fn dot_error(x: DVec3, n: DVec3) -> f64 {
     gamma(5) * (x.abs().dot(n.abs())) + UNDERFLOW
-}
-
-/// `|t - t_exact|` for `t = fl(num / den)` where the exact parameter is
-/// `num_exact / den_exact`, `|num - num_exact| <= e_num` and `|den -
-/// den_exact| <= e_den`: with `|den| > e_den`,
-/// `|num/den - num_exact/den_exact| <= (e_num + |num/den| e_den) / (|den| -
-/// e_den)` (write the difference over the common denominator), and the
-/// division's rounding adds `u |t|`; `|num/den| <= |t| (1 + 2u)`. An
-/// infinite bound where `|den| <= e_den` (the line may be parallel).
-#[inline]
-pub(crate) fn quotient_t_error(t: f64, e_num: f64, den: f64, e_den: f64) -> f64 {
-    let room = den.abs() - e_den;
-    // Not positive, or NaN from an overflowed bound: no certified `t`.
-    if room.is_nan() || room <= 0.0 {
-        return f64::INFINITY;
-    }
-    ((e_num + t.abs() * (1.0 + 2.0 * U) * e_den) / room + U * t.abs()) * (1.0 + gamma(6))
-        + UNDERFLOW
 }
 
 /// The per-axis error of the point `p = ray.at(t)` computed as `fl(o_k +

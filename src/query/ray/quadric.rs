@@ -1,6 +1,6 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
-use super::{Hit, RayCast, hit_at, unit_or};
+use super::{Hit, Precise, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{two_prod, two_sum};
 use crate::arith::exponent::{Grain, pow2};
 use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
@@ -9,10 +9,11 @@ use crate::arith::roundoff::U;
 use crate::arith::std_or_libm::fma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::Roots;
+use crate::roots::bounded::{BoundedFirstIn, Tier};
 use crate::roots::certified::{
-    AllRoots, Coeffs, ETA, FirstIn, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
+    AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
 };
+use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Quadric;
 use glam::DVec3;
 
@@ -129,19 +130,7 @@ fn filtered<Q: Question>(k: &[f64; 10], o: DVec3, d: DVec3, q: Q) -> Option<Q::A
         return None;
     }
     let (e_a, e_b, e_c) = (18.0 * U * ma, 18.0 * U * mb, 18.0 * U * mc);
-    let disc = fma(-a, c, b * b);
-    // B^2 rounds once inside the fma's addend, the fma once; the inputs'
-    // errors propagate through the products.
-    let e_disc = 2.0 * b.abs() * e_b + a.abs() * e_c + c.abs() * e_a + U * b * b + U * disc.abs();
-    let k2 = Coeffs {
-        a,
-        e_a,
-        b,
-        e_b,
-        c,
-        disc,
-        e_disc,
-    };
+    let k2 = Coeffs::with_product_discriminant((a, e_a), (b, e_b), (c, e_c));
     // A leading coefficient that is (nearly) zero declines here and goes to
     // the exact stage, which handles degrees 1 and 0.
     q.answer(&k2, &Line { m, o, d })
@@ -290,16 +279,39 @@ impl RayCast for Quadric {
     /// direction, normalized.
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        hit_at(self.cast_t(ray, range), ray, |point| {
+        self.cast_tier(ray, range, Tier::Default)
+    }
+
+    /// The default tier: hit or miss exact, `t` from the stable formula on
+    /// the filtered coefficients with an a-priori bound
+    /// (`roots/bounded.rs`); for a line on the quadric (every line, for
+    /// all-zero coefficients) the point of `range` nearest `t = 0`, exact.
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.solve(ray, BoundedFirstIn(range, Tier::Default))
+    }
+}
+
+impl Quadric {
+    /// The first hit in `range` from `tier`'s root.
+    #[inline]
+    fn cast_tier(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Hit> {
+        hit_at(self.solve(ray, BoundedFirstIn(range, tier)), ray, |point| {
             unit_or(self.gradient(point), -ray.direction())
         })
     }
+}
 
-    /// The `t` of [`RayCast::cast`]'s hit: for a line on the quadric (every
-    /// line, for all-zero coefficients) the point of `range` nearest
-    /// `t = 0`.
+impl RayCast for Precise<Quadric> {
+    /// [`Quadric`]'s cast, its `t` within 4 ulps of the correctly rounded
+    /// root ([`Quadric::line_roots`]' accuracy).
     #[inline]
-    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        self.solve(ray, FirstIn(range))
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        self.0.cast_tier(ray, range, Tier::Precise)
+    }
+
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.0.solve(ray, BoundedFirstIn(range, Tier::Precise))
     }
 }

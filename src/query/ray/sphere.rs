@@ -1,15 +1,16 @@
 //! Ray against [`Sphere`]: exact root count, accurate roots.
 
-use super::{Hit, RayCast, hit_at, unit_or};
+use super::{Hit, Precise, RayCast, hit_at, unit_or};
 use crate::arith::error_free::exact_difference;
 use crate::arith::exponent::Grain;
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::Roots;
-use crate::roots::certified::{AllRoots, FirstIn, Question, SMALL_SPAN, exact_roots};
-use crate::roots::radial::circle_of;
+use crate::roots::bounded::{BoundedFirstIn, Tier, first_bounded};
+use crate::roots::certified::{AllRoots, Coeffs, Question, SMALL_SPAN, exact_roots};
+use crate::roots::radial::{circle_of, rounded_sphere};
+use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Sphere;
 use glam::DVec3;
 
@@ -121,18 +122,81 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize>(
     exact_roots::<N2, N4>((&a, 2 * ld), (&b, lo + ld), (&cc, 2 * lo))
 }
 
+impl Sphere {
+    /// The default tier's coefficients from the rounded `w = o - c`
+    /// ([`rounded_sphere`]).
+    #[inline(always)]
+    fn rounded_coeffs(&self, ray: &Ray) -> Option<Coeffs> {
+        let (w, d) = (ray.origin() - self.center, ray.direction());
+        rounded_sphere(w, d, self.radius)
+    }
+
+    /// The precise tier's first root in `range`, bounded.
+    #[inline]
+    fn precise_first(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.solve(ray, BoundedFirstIn(range, Tier::Precise))
+    }
+}
+
+/// The default tier's first root, run in the copy compiled for CPUs with
+/// FMA (and so with AVX's three-operand instructions) where the CPU has
+/// it: the arithmetic has no `fma` call, so the results are the same.
+struct DefaultTier<'a> {
+    sphere: &'a Sphere,
+    ray: &'a Ray,
+    range: Interval,
+}
+
+impl FmaKernel for DefaultTier<'_> {
+    type Output = Option<Option<BoundedRoot>>;
+
+    #[inline(always)]
+    fn run(&self) -> Self::Output {
+        first_bounded(&self.sphere.rounded_coeffs(self.ray)?, self.range)
+    }
+}
+
 impl RayCast for Sphere {
     /// The first hit in `range`; the normal points away from the centre
     /// (for radius zero: against the ray).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        hit_at(self.cast_t(ray, range), ray, |point| {
+        hit_at(self.cast_bounded(ray, range), ray, |point| {
             unit_or(point - self.center, -ray.direction())
         })
     }
 
+    /// The default tier: hit or miss decided exactly (the discriminant's
+    /// sign from its running bound, the root's place in `range` from its
+    /// own bound, the precise tier and the exact stage behind both), `t`
+    /// from the stable formula on `f64` coefficients with an a-priori
+    /// bound (`roots/bounded.rs`), typically a few ulps and at most its
+    /// condition number's worth on near-tangent rays.
     #[inline]
-    fn cast_t(&self, ray: &Ray, range: Interval) -> Option<f64> {
-        self.solve(ray, FirstIn(range))
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        match with_fma(&DefaultTier {
+            sphere: self,
+            ray,
+            range,
+        }) {
+            Some(first) => first,
+            None => self.precise_first(ray, range),
+        }
+    }
+}
+
+impl RayCast for Precise<Sphere> {
+    /// [`Sphere`]'s cast, its `t` within 4 ulps of the correctly rounded
+    /// root ([`Sphere::line_roots`]' accuracy).
+    #[inline]
+    fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        hit_at(self.cast_bounded(ray, range), ray, |point| {
+            unit_or(point - self.0.center, -ray.direction())
+        })
+    }
+
+    #[inline]
+    fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
+        self.0.precise_first(ray, range)
     }
 }

@@ -285,39 +285,62 @@ impl Quadratic {
     /// the crate's casts return it) beyond.
     pub fn answer(&self) -> LineAnswer {
         let count = self.count();
+        let roots = match count {
+            Some(n) => (0..n)
+                .map(|i| self.round_change(|t| self.step(count, i, t)))
+                .collect(),
+            None => vec![],
+        };
+        LineAnswer { count, roots }
+    }
+
+    /// The step function of the `index`-th distinct real root, ascending,
+    /// given the finite `count` ([`Quadratic::count`]): -1 below the root,
+    /// 0 at it, +1 above.
+    fn step(&self, count: Option<usize>, index: usize, t: &Dyadic) -> i8 {
         let s = self.a.sign();
         // The slope's sign times a's: the side of the vertex t lies on.
         let side = |t: &Dyadic| s * self.slope_sign_at(t);
-        let roots = match count {
-            Some(1) if s == 0 => {
-                let dir = self.b.sign();
-                vec![self.round_change(|t| dir * self.sign_at(t))]
-            }
+        match (count, index) {
+            (Some(1), 0) if s == 0 => self.b.sign() * self.sign_at(t),
             // A double root: the vertex itself.
-            Some(1) => vec![self.round_change(side)],
-            Some(2) => {
-                // Left of the lower root p has a's sign, between the roots
-                // the opposite one; each root's step function is constant
-                // on the far side of the vertex.
-                let lower = |t: &Dyadic| {
-                    if side(t) >= 0 {
-                        1
-                    } else {
-                        -s * self.sign_at(t)
-                    }
-                };
-                let upper = |t: &Dyadic| {
-                    if side(t) <= 0 {
-                        -1
-                    } else {
-                        s * self.sign_at(t)
-                    }
-                };
-                vec![self.round_change(lower), self.round_change(upper)]
+            (Some(1), 0) => side(t),
+            // Left of the lower root p has a's sign, between the roots the
+            // opposite one; each root's step function is constant on the
+            // far side of the vertex.
+            (Some(2), 0) => {
+                if side(t) >= 0 {
+                    1
+                } else {
+                    -s * self.sign_at(t)
+                }
             }
-            _ => vec![],
-        };
-        LineAnswer { count, roots }
+            (Some(2), 1) => {
+                if side(t) <= 0 {
+                    -1
+                } else {
+                    s * self.sign_at(t)
+                }
+            }
+            _ => panic!("no root {index} of {self:?}"),
+        }
+    }
+
+    /// Whether the `index`-th distinct real root (ascending) lies in
+    /// `[t - error, t + error]`, decided exactly (the ends as exact sums):
+    /// the check of a value that comes with a certified bound. An infinite
+    /// or NaN `error` bounds nothing and counts as holding only when
+    /// infinite.
+    pub fn root_within(&self, index: usize, t: f64, error: f64) -> bool {
+        if error == f64::INFINITY {
+            return true;
+        }
+        if !(t.is_finite() && error.is_finite() && error >= 0.0) {
+            return false;
+        }
+        let count = self.count();
+        let (t, e) = (Dyadic::from_f64(t), Dyadic::from_f64(error));
+        self.step(count, index, &t.sub(&e)) <= 0 && self.step(count, index, &t.add(&e)) >= 0
     }
 
     /// The double nearest the point where the monotone step function `f`
