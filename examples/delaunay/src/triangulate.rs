@@ -446,6 +446,15 @@ impl<P: Predicates> Mesh<P> {
             self.tris[s as usize].n[0] = b;
             self.tris[b as usize].n[1] = s;
         }
+        // Two edges ending at one vertex leave a triangle without a
+        // predecessor, its link unset.
+        if self
+            .cavity
+            .iter()
+            .any(|&s| self.tris[s as usize].n[1] == GHOST)
+        {
+            return None;
+        }
         for &s in &self.cavity {
             let t = &mut self.tris[s as usize];
             let (v, n) = (t.v, t.n);
@@ -492,6 +501,33 @@ mod tests {
                 assert_eq!(other.n[j] as usize, t, "triangle {t} edge {i}");
             }
         }
+    }
+
+    #[test]
+    fn a_boundary_that_is_not_one_loop_is_refused() {
+        let pts = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]].map(DVec2::from_array);
+        let mut mesh = Mesh::<Exactray>::start(pts.to_vec(), (0..4).collect()).expect("a triangle");
+        let fan = |mesh: &mut Mesh<Exactray>, edges: &[(u32, u32)]| {
+            mesh.cavity.clear();
+            mesh.starts.clear();
+            for &(u, w) in edges {
+                mesh.cavity.push(mesh.tris.len() as u32);
+                mesh.starts.push((u, mesh.tris.len() as u32));
+                mesh.tris.push(Triangle {
+                    v: [u, w, 3],
+                    n: [GHOST; 3],
+                });
+            }
+            mesh.link_fan()
+        };
+        // One loop: 0 -> 1 -> 2 -> 0.
+        assert!(fan(&mut mesh, &[(0, 1), (1, 2), (2, 0)]).is_some());
+        // Two edges start at 1.
+        assert!(fan(&mut mesh, &[(0, 1), (1, 2), (1, 0)]).is_none());
+        // Two edges end at 1, none at 0.
+        assert!(fan(&mut mesh, &[(0, 1), (1, 2), (2, 1)]).is_none());
+        // An edge ends where none starts.
+        assert!(fan(&mut mesh, &[(0, 1), (1, GHOST - 1)]).is_none());
     }
 
     #[test]
