@@ -180,7 +180,9 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         format!(
             "**delaunay**: one triangulator (`exactray-delaunay`) on exactray's predicates and on robust's, and \
              spade's `bulk_load`, on one core; the median of {reps} whole runs, checked by the exact audit \
-             (big-integer oracle):\n\n\
+             (big-integer oracle; an output identical to one already audited, triangles and duplicates, \
+             shares its audit). A row whose run fails counts all its points wrong, and its time is the \
+             time to fail:\n\n\
              | inputs | method | ms | errors | audit |\n|---|---|---|---|---|\n{}",
             lines.join("\n")
         ),
