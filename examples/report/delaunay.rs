@@ -9,7 +9,8 @@
 //! cocircular), `tiny:N` and `huge:N` (the uniform points times `2^-532`
 //! and `2^532`), `mixed:N` (magnitudes from `1e-301` to `1e301` in one
 //! set): `exactray::testing::plane_points`. `ns_per_op` is ns per point,
-//! the median of a few whole triangulations (ordering included).
+//! the median of 5 whole triangulations (3 at 10^6 points; ordering
+//! included), the methods' runs interleaved.
 //! `errors`: the exact audit's count (`exactray_delaunay::audit`, on the
 //! big-integer oracle): triangles inverted or violating the empty circle,
 //! plus every way the output fails to be a triangulation of the points
@@ -46,18 +47,26 @@ const METHODS: [(&str, Method); 3] = [
     }),
 ];
 
-/// One method's timed runs on one point set: the last run's output and
-/// the median time in seconds.
-fn timed(method: Method, points: &[DVec2], reps: usize) -> (Result<Triangulation, String>, f64) {
-    let mut times = Vec::with_capacity(reps);
-    let mut output = Err("not run".to_string());
+/// Every method's timed runs on one point set, repetitions interleaved so
+/// that a slow spell of a shared machine hits them alike: each method's
+/// last output and median time in seconds.
+fn timed(points: &[DVec2], reps: usize) -> Vec<(Result<Triangulation, String>, f64)> {
+    let mut times = vec![Vec::with_capacity(reps); METHODS.len()];
+    let mut outputs: Vec<Result<Triangulation, String>> =
+        METHODS.iter().map(|_| Err("not run".to_string())).collect();
     for _ in 0..reps {
-        let start = Instant::now();
-        output = catch_unwind(AssertUnwindSafe(|| method(points)))
-            .unwrap_or_else(|_| Err("panicked".to_string()));
-        times.push(start.elapsed().as_secs_f64());
+        for ((_, method), (output, times)) in METHODS.iter().zip(outputs.iter_mut().zip(&mut times))
+        {
+            let start = Instant::now();
+            *output = catch_unwind(AssertUnwindSafe(|| method(points)))
+                .unwrap_or_else(|_| Err("panicked".to_string()));
+            times.push(start.elapsed().as_secs_f64());
+        }
     }
-    (output, median(times))
+    outputs
+        .into_iter()
+        .zip(times.into_iter().map(median))
+        .collect()
 }
 
 /// The triangles as a set, with the duplicates, sorted: equal keys, equal
@@ -147,7 +156,6 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     } else {
         &[100_000, 1_000_000]
     };
-    let reps = 3;
     let mut rows = Vec::new();
     let mut lines = Vec::new();
     for &n in sizes {
@@ -156,9 +164,9 @@ pub fn run(cfg: &Config) -> Vec<Row> {
             let inputs = format!("{}:{n}", dist.name());
             // Outputs already audited: an identical one is not audited again.
             let mut audited = Vec::new();
-            for (name, method) in METHODS {
-                let (output, seconds) = timed(method, &points, reps);
-                let (errors, detail) = assess(&points, output, name == "spade", &mut audited);
+            let reps = if n <= 100_000 { 5 } else { 3 };
+            for ((name, _), (output, seconds)) in METHODS.iter().zip(timed(&points, reps)) {
+                let (errors, detail) = assess(&points, output, *name == "spade", &mut audited);
                 lines.push(format!(
                     "| {inputs} | {name} | {:.1} | {errors} | {detail} |",
                     seconds * 1e3
@@ -179,7 +187,8 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         "delaunay",
         format!(
             "**delaunay**: one triangulator (`exactray-delaunay`) on exactray's predicates and on robust's, and \
-             spade's `bulk_load`, on one core; the median of {reps} whole runs, checked by the exact audit \
+             spade's `bulk_load`, on one core; the median of 5 whole runs (3 at 10^6 points), the methods' \
+             runs interleaved, checked by the exact audit \
              (big-integer oracle; an output identical to one already audited, triangles and duplicates, \
              shares its audit). A row whose run fails counts all its points wrong, and its time is the \
              time to fail:\n\n\
