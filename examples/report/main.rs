@@ -20,6 +20,7 @@ mod ray_family;
 mod signs;
 mod targets;
 
+mod delaunay;
 mod incircle;
 mod insphere;
 mod nearest;
@@ -61,6 +62,7 @@ const FAMILIES: &[(&str, Family)] = &[
     ("any_hit", scene::run_any_hit),
     ("spawn", scene::run_spawn),
     ("render", render::run),
+    ("delaunay", delaunay::run),
 ];
 
 fn main() -> std::io::Result<()> {

@@ -118,12 +118,12 @@ impl SplitMix64 {
     }
 
     /// Uniform in `[-1, 1)`.
-    fn signed(&mut self) -> f64 {
+    pub(super) fn signed(&mut self) -> f64 {
         2.0 * self.next_f64() - 1.0
     }
 
     /// Uniform integer in `lo..=hi`.
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+    pub(super) fn int(&mut self, lo: i64, hi: i64) -> i64 {
         let span = (hi - lo + 1) as u128;
         lo + ((self.next_u64() as u128 * span) >> 64) as i64
     }
@@ -380,7 +380,7 @@ fn rational_on_sphere<const D: usize>(rng: &mut SplitMix64) -> [f64; D] {
 }
 
 /// `x * 2^k`, rounded once, for `|k| <= 2044`.
-fn scale(x: f64, k: i64) -> f64 {
+pub(super) fn scale(x: f64, k: i64) -> f64 {
     // Splitting the power keeps the first product exact for any input this
     // module scales, so only the last one rounds (into the subnormals).
     x * pow2(k / 2) * pow2(k - k / 2)

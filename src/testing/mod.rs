@@ -8,7 +8,9 @@
 //!   at the shared edges of a tiled mesh (`TiledMesh`, with `alloc`), and
 //!   against spheres, cylinders, cones and quadrics ([`sphere_ray_case`],
 //!   ...); point sets and queries for nearest-point searches
-//!   ([`nearest_points`]); triangles to rasterize
+//!   ([`nearest_points`]); planar point sets for triangulations, uniform,
+//!   a cocircular grid and extreme magnitudes ([`plane_points`]);
+//!   triangles to rasterize
 //!   ([`raster_triangle_case`]); small scenes of meshes and every analytic
 //!   shape, rays for them and secondary rays spawned from their hits
 //!   (`random_scene`, `scene_ray`, `spawned_ray`, with `alloc`); large
@@ -46,6 +48,7 @@ mod generators;
 #[cfg(feature = "alloc")]
 mod meshes;
 mod pixels;
+mod plane_points;
 mod points;
 mod rays;
 #[cfg(feature = "alloc")]
@@ -58,6 +61,7 @@ pub use generators::*;
 #[cfg(feature = "alloc")]
 pub use meshes::*;
 pub use pixels::*;
+pub use plane_points::*;
 pub use points::*;
 pub use rays::*;
 #[cfg(feature = "alloc")]

@@ -88,11 +88,11 @@ fn nudge(rng: &mut SplitMix64, v: f64) -> f64 {
 }
 
 /// A stream's name: the distribution's `name:n`.
-struct Key<'a>(&'a str, usize);
+pub(super) struct Key<'a>(pub(super) &'a str, pub(super) usize);
 
-/// The stream `nearest/<what>/<key>:<n>` (FNV-1a of the name, as
+/// The stream `<family>/<what>/<key>:<n>` (FNV-1a of the name, as
 /// [`SplitMix64::for_inputs`] hashes it), without formatting a string.
-fn stream(what: &str, Key(key, n): Key) -> SplitMix64 {
+pub(super) fn stream(family: &[u8], what: &str, Key(key, n): Key) -> SplitMix64 {
     let mut digits = [0u8; 20];
     let mut at = digits.len();
     let mut rest = n;
@@ -105,7 +105,7 @@ fn stream(what: &str, Key(key, n): Key) -> SplitMix64 {
         }
     }
     SplitMix64::for_parts(
-        b"nearest",
+        family,
         [what.as_bytes(), b"/", key.as_bytes(), b":", &digits[at..]],
     )
 }
@@ -118,7 +118,7 @@ pub fn nearest_points(dist: PointDistribution, n: usize) -> impl Iterator<Item =
         PointDistribution::Clustered | PointDistribution::OffDistribution => "clustered",
         PointDistribution::NearTies => "near-ties",
     };
-    let mut rng = stream("points", Key(key, n));
+    let mut rng = stream(b"nearest", "points", Key(key, n));
     let c = clusters();
     let m = grid_side(n);
     (0..n).map(move |i| match dist {
@@ -138,7 +138,7 @@ pub fn nearest_queries(
     n: usize,
     count: usize,
 ) -> impl Iterator<Item = DVec3> {
-    let mut rng = stream("queries", Key(dist.name(), n));
+    let mut rng = stream(b"nearest", "queries", Key(dist.name(), n));
     let c = clusters();
     (0..count).map(move |_| {
         DVec3::from_array(match dist {

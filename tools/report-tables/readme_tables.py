@@ -328,6 +328,23 @@ def scene_spawn(rep, cells):
     ]
 
 
+DELAUNAY_METHODS = ["exactray", "robust", "spade"]
+
+
+def delaunay(rep, cells):
+    inputs = cells[0]
+    g = lambda m: rep.row("delaunay", m, inputs)
+    t = lambda m: rep.ns("delaunay", m, inputs)
+    # No ratio to a peer that failed on every point: its time is the time
+    # it took to give up.
+    failed = lambda m: g(m) is None or g(m)["errors"] >= g(m)["cases"]
+    against = lambda m: "-" if failed(m) else ratio(t("exactray"), t(m))
+    return [("delaunay", inputs)], [inputs] + [cell(g(m), wrong_pct1) for m in DELAUNAY_METHODS] + [
+        against("robust"),
+        against("spade"),
+    ]
+
+
 TABLES = [
     (
         "Predicates",
@@ -402,6 +419,13 @@ TABLES = [
         "| pixels differing |",
         render_frame,
         ["render"],
+    ),
+    (
+        "Delaunay triangulation",
+        "| inputs | exactray ns/point (wrong) | robust ns/point (wrong) | spade ns/point (wrong) "
+        "| exactray / robust | exactray / spade |",
+        delaunay,
+        ["delaunay"],
     ),
 ]
 

@@ -9,8 +9,10 @@
 //! - [`signs`]: the predicates' signs, textbook and by the `robust` crate;
 //! - [`raster`]: the textbook rasterizer and one ray per pixel;
 //! - [`nearest`]: building and querying `kiddo`'s and `rstar`'s indexes;
-//! - [`scene`]: obvhs's and parry3d's ray casts over a triangle mesh.
+//! - [`scene`]: obvhs's and parry3d's ray casts over a triangle mesh;
+//! - [`delaunay`]: spade's Delaunay triangulation.
 
+pub mod delaunay;
 pub mod nearest;
 pub mod raster;
 pub mod scene;
