@@ -179,6 +179,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
                     cases: n as u64,
                     errors,
                     max_ulps: None,
+                    max_bound_ulps: None,
                 });
             }
         }
