@@ -63,8 +63,9 @@ impl Coeffs {
     /// fma's addend, the fma once; the coefficients' errors propagate
     /// through the products, to second order included (`e_b^2`, `e_a e_c`:
     /// where `B` cancels they are the whole bound). The general quadric's
-    /// and the cone's form, whose coefficients carry no structure the
-    /// discriminant could use.
+    /// form, whose coefficients carry no structure the discriminant could
+    /// use (the sphere's, the cylinder's and the cone's have one that does
+    /// not cancel for far origins).
     #[inline(always)]
     pub(crate) fn with_product_discriminant(
         (a, e_a): (f64, f64),

@@ -12,7 +12,7 @@ use crate::interval::Interval;
 use crate::query::ray::Ray;
 use crate::roots::bounded::{Place, Tier, both_bounded, precise, quotient_error};
 use crate::roots::certified::{
-    AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
+    AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
 };
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Cone;
@@ -173,7 +173,7 @@ impl ScaledLine {
     /// underflows loses at most `2^-1075` and later factors do not grow it:
     /// `ETA` (`2^-500`) per coefficient covers them.
     ///
-    /// The discriminant and its bound: [`Coeffs::with_product_discriminant`].
+    /// The discriminant and its bound: [`ScaledLine::moment_discriminant`].
     #[inline(always)]
     fn coeffs(&self) -> Option<Coeffs> {
         let (w, d, a) = (self.wh, self.d, self.a);
@@ -198,11 +198,69 @@ impl ScaledLine {
             gamma(26) * mb + ETA,
             gamma(28) * mc + ETA,
         );
-        Some(Coeffs::with_product_discriminant(
-            (a_, e_a),
-            (b, e_b),
-            (c, e_c),
-        ))
+        let (disc, e_disc) = self.moment_discriminant(s, rr);
+        Some(Coeffs {
+            a: a_,
+            e_a,
+            b,
+            e_b,
+            c,
+            e_c,
+            disc,
+            e_disc,
+        })
+    }
+
+    /// The discriminant `B^2 - A C` in the form that does not cancel for
+    /// far origins, from the line's moment `n = w x d` about the apex.
+    ///
+    /// The cone's form is `P(x) = s |x x a|^2 - r^2 (x . a)^2 = x^T M x` with
+    /// `M = s^2 I - (s + r^2) a a^T` (`|x x a|^2 = s |x|^2 - (x . a)^2`), so
+    /// `A = s^2 |d|^2 - (s + r^2) q^2`, `B = s^2 (w . d) - (s + r^2) p q`,
+    /// `C = s^2 |w|^2 - (s + r^2) p^2` (`p = w . a`, `q = d . a`), and
+    /// expanding, `B^2 - A C = -s^4 |n|^2 + s^2 (s + r^2) |p d - q w|^2`
+    /// with `p d - q w = -a x n` and `|a x n|^2 = s |n|^2 - (a . n)^2`:
+    /// `B^2 - A C = s^2 (s r^2 |n|^2 - (s + r^2) (a . n)^2)`. A far origin
+    /// makes `B^2` and `A C` huge and nearly equal; `|n|` is `|d|` times the
+    /// line's distance from the apex, of the size of the cone.
+    ///
+    /// Bounds, first order: `n`'s error vector has 1-norm at most `E =
+    /// |wl|_1 |d|_1 + gamma(3) |w|_1 |d|_1` (`w`'s low part dropped; two
+    /// products and a difference per component); `|n|^2` moves by at most
+    /// `2 |n|_1 E + E^2` and rounds within `gamma(3)`; `a . n` by `|a|_1 E`
+    /// and `gamma(3) |a|_1 |n|_1`, its square by twice that times `|a . n|`
+    /// plus its square and one rounding. The products with `s r^2`
+    /// (within `gamma(5)` of the exact one: `s` three roundings, `r^2` one,
+    /// the product one) and `s + r^2` (`gamma(4)`, all terms positive) add
+    /// `gamma(6)` of each term, the difference `u`, and `s^2` (`gamma(7)`)
+    /// with the last product `gamma(8)` of the result. The bound's own
+    /// roundings take `1 + gamma(8)`; `ETA` per term covers underflows
+    /// (every scaled input lies below 1).
+    #[inline(always)]
+    fn moment_discriminant(&self, s: f64, rr: f64) -> (f64, f64) {
+        let (w, d, a) = (self.wh, self.d, self.a);
+        let (nd, na) = (norm1(d), norm1(a));
+        let n = w.cross(d);
+        let e_n = norm1(self.wl) * nd + gamma(3) * norm1(w) * nd + 2.0 * ETA;
+        let nn = norm1(n);
+        let n2 = n.dot(n);
+        let e_n2 = 2.0 * nn * e_n + e_n * e_n + gamma(3) * n2 + ETA;
+        let g = a.dot(n);
+        let e_g = na * e_n + gamma(3) * na * nn + ETA;
+        let g2 = g * g;
+        let e_g2 = 2.0 * g.abs() * e_g + e_g * e_g + U * g2 + ETA;
+        let (srr, sr) = (s * rr, s + rr);
+        let (x1, x2) = (srr * n2, sr * g2);
+        let inner = x1 - x2;
+        let e_inner = (srr * e_n2 + sr * e_g2) * (1.0 + gamma(6))
+            + gamma(6) * (x1 + x2)
+            + U * inner.abs()
+            + ETA;
+        let ss = s * s;
+        let disc = ss * inner;
+        let e_disc =
+            (ss * e_inner * (1.0 + gamma(7)) + gamma(8) * disc.abs()) * (1.0 + gamma(8)) + ETA;
+        (disc, e_disc)
     }
 }
 
