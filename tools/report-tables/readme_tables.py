@@ -223,14 +223,18 @@ def quadrics(rep, cells):
     q = lambda r: f"{wrong_pct2(r)}; {ulps(r['max_ulps'], commas=False)}"
     g = lambda m: rep.row(family, m, inputs)
     t = lambda m: rep.ns(family, m, inputs)
+    bound = g("exactray")
     return [(family, inputs)], [
         family,
         inputs,
         cell(g("exactray"), q),
+        "-" if bound is None else ulps(bound.get("max_bound_ulps"), commas=False),
+        cell(g("exactray-precise"), q),
         cell(g("naive"), q),
         cell(g("naive-stable"), q),
         cell(g("parry3d"), q),
-        ratio(t("exactray"), t("naive"), decimals=1),
+        ratio(t("exactray"), t("naive-stable"), decimals=2),
+        ratio(t("exactray"), t("parry3d"), decimals=2),
     ]
 
 
@@ -368,7 +372,8 @@ TABLES = [
     ),
     (
         "Ray casts against quadrics",
-        "| family | inputs | exactray | naive | naive-stable | parry3d | exactray / naive |",
+        "| family | inputs | exactray | exactray bound ulps | exactray-precise | naive | naive-stable | parry3d "
+        "| exactray / naive-stable | exactray / parry3d |",
         quadrics,
         QUADRIC_FAMILIES,
     ),
