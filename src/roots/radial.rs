@@ -1,9 +1,11 @@
 //! The sphere-like problem `|w + t d|^2 = rr` that the sphere (`w = o - c`)
 //! and the cylinder (`w`, `d` projected across the axis) share, filtered:
 //! its half-form coefficients with error bounds, and the two evaluations
-//! of its polynomial that certify the roots ([`Question`]).
+//! of its polynomial that certify the roots ([`Question`]); and, for the
+//! default tier, the same coefficients from inputs rounded once
+//! ([`rounded_sphere`], [`rounded_circle`]).
 //!
-//! Each input is carried as a double-double `hi + lo` (the sphere's
+//! In the precise tier each input is carried as a double-double `hi + lo` (the sphere's
 //! `o - c` and `r^2` are exact that way; the cylinder's projections are
 //! within `O(u^2)`), with a bound on what the pair still misses. That is
 //! what lets the working-precision evaluation certify far origins: the
@@ -13,7 +15,7 @@
 use super::certified::{Coeffs, ETA, Polynomial, Question, in_filter_range, norm1};
 use crate::arith::error_free::{two_prod, two_sum};
 use crate::arith::roundoff::{U, gamma};
-use crate::arith::std_or_libm::{fma, sqrt};
+use crate::arith::std_or_libm::fma;
 use glam::DVec3;
 
 /// `|w + t d|^2 = rr`, with `w = wh + wl` to within `ew` (componentwise),
@@ -244,13 +246,14 @@ pub(crate) fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
 /// share, from rounded inputs (no double-double pairs, no FMA): `A = |d|^2`,
 /// `B = w . d`, `C = |w|^2 - rr`, `X = |w x d|^2`, `rr A` and the
 /// discriminant in Lagrange's form `rr A - X` (it does not cancel for far
-/// origins as `B^2 - A C` does), and the 1-norms of `w` and `d`.
+/// origins as `B^2 - A C` does), and the 1-norms of `w`, `d` and `w x d`.
 #[derive(Clone, Copy, Debug)]
 struct RoundedCircle {
     a: f64,
     b: f64,
     c: f64,
     x: f64,
+    ncr: f64,
     ra: f64,
     disc: f64,
     nw: f64,
@@ -280,6 +283,7 @@ impl RoundedCircle {
             b: w.dot(d),
             c: w.dot(w) - rr,
             x,
+            ncr: norm1(cr),
             ra,
             disc: ra - x,
             nw,
@@ -288,28 +292,18 @@ impl RoundedCircle {
     }
 
     /// A bound on `X`'s error given `E`, the 1-norm of `w x d`'s error
-    /// vector `δ`: `X` moves by `sum_k δ_k (2 x_k + δ_k)`, at most `2 M E +
-    /// E^2` for `M >= |w x d|_2` (Cauchy–Schwarz), and rounds within
-    /// `gamma(3) X`. Where the computed discriminant is positive, `|w x
-    /// d|^2 < rr |d|^2`, so `M = r_up |d|_1` for `r_up >= sqrt(rr)`: a bound
-    /// of the size of the radius, not of `|w|`, which keeps far origins'
-    /// hits tight; elsewhere `M = sqrt(X)` (one square root, which a hit
-    /// spends on its roots instead). `M` is within `gamma(7)` of a bound on
-    /// the exact norm (`|w x d|^2 <= X (1 + gamma(3))`, `X < rr A`, `rr` and
-    /// `A` rounded), which the discriminant's margin covers.
+    /// vector `δ`: `X` moves by `sum_k δ_k (2 x_k + δ_k)`, at most `2 |w x
+    /// d|_1 E + E^2`, and rounds within `gamma(3) X`. `|w x d|` is `|d|`
+    /// times the line's distance from the centre, so on a hit it is of the
+    /// size of the radius, not of `|w|`: far origins' hits stay tight.
     #[inline(always)]
-    fn e_x(&self, e_cr: f64, r_up: f64) -> f64 {
-        let m = if self.disc > 0.0 {
-            r_up * self.nd
-        } else {
-            sqrt(self.x)
-        };
-        2.0 * m * e_cr + e_cr * e_cr + gamma(3) * self.x
+    fn e_x(&self, e_cr: f64) -> f64 {
+        2.0 * self.ncr * e_cr + e_cr * e_cr + gamma(3) * self.x
     }
 }
 
-/// The margin of the discriminant's bound: its own roundings and `M`'s
-/// (see [`RoundedCircle::e_x`]).
+/// The margin of the discriminant's bound: its own roundings and the
+/// computed norms'.
 const DISC_MARGIN: f64 = 1.0 + gamma(16);
 
 /// The margin of the other bounds: their own roundings and the computed
@@ -332,8 +326,7 @@ pub(crate) fn rounded_sphere(w: DVec3, d: DVec3, r: f64) -> Option<Coeffs> {
     let k = RoundedCircle::of(w, d, rr)?;
     let p = k.nw * k.nd;
     let e_cr = gamma(4) * p + 2.0 * ETA;
-    let e_disc =
-        (gamma(5) * k.ra + rr * ETA + k.e_x(e_cr, r) + U * k.disc.abs()) * DISC_MARGIN + ETA;
+    let e_disc = (gamma(5) * k.ra + rr * ETA + k.e_x(e_cr) + U * k.disc.abs()) * DISC_MARGIN + ETA;
     Some(Coeffs {
         a: k.a,
         e_a: gamma(3) * k.a * OWN_MARGIN + ETA,
@@ -349,8 +342,7 @@ pub(crate) fn rounded_sphere(w: DVec3, d: DVec3, r: f64) -> Option<Coeffs> {
 /// The default tier's coefficients of `|w + t d|^2 = rr` from inputs
 /// rounded a few times, with bounds: the exact `w` within `ew1` of the
 /// given one in the 1-norm, the exact `d` within `ed1`, the exact `rr`
-/// within `err`, and `r_up` at least `sqrt(rr)` (the general cylinder's
-/// projections).
+/// within `err` (the general cylinder's projections).
 ///
 /// Error bounds, first order, in 1-norms as in `Circle::coeffs` (Higham,
 /// *Accuracy and Stability*, ch. 3: a sum of `n` rounded products is
@@ -377,20 +369,17 @@ pub(crate) fn rounded_circle(
     ew1: f64,
     d: DVec3,
     ed1: f64,
-    (rr, err, r_up): (f64, f64, f64),
+    (rr, err): (f64, f64),
 ) -> Option<Coeffs> {
     let k = RoundedCircle::of(w, d, rr)?;
     let (nw, nd) = (k.nw, k.nd);
     let p = nw * nd;
     let e_a = (2.0 * nd * ed1 + ed1 * ed1 + gamma(3) * k.a) * OWN_MARGIN + ETA;
     let e_cr = nw * ed1 + ew1 * nd + ew1 * ed1 + gamma(3) * p;
-    let e_disc = (k.a * err
-        + rr * e_a
-        + err * e_a
-        + k.e_x(e_cr + 2.0 * ETA, r_up)
-        + U * (k.ra + k.disc.abs()))
-        * DISC_MARGIN
-        + ETA;
+    let e_disc =
+        (k.a * err + rr * e_a + err * e_a + k.e_x(e_cr + 2.0 * ETA) + U * (k.ra + k.disc.abs()))
+            * DISC_MARGIN
+            + ETA;
     Some(Coeffs {
         a: k.a,
         e_a,

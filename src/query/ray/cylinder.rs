@@ -208,8 +208,7 @@ impl Cylinder {
     /// d x a`: each component two products and a difference (`gamma(2)`
     /// of `|w_i a_j| + |w_j a_i|`, summed over the components at most
     /// `|w|_1 |a|_1`), `u` also carrying `w`'s error (`u |w|_1 |a|_1`);
-    /// `R^2 = r^2 |a|^2` from the pair computed when the cylinder was built,
-    /// and `R <= r |a|_1`.
+    /// `R^2 = r^2 |a|^2` from the pair computed when the cylinder was built.
     #[inline(always)]
     fn rounded_coeffs(&self, ray: &Ray) -> Option<Coeffs> {
         let (w, d) = (ray.origin() - self.point, ray.direction());
@@ -229,7 +228,7 @@ impl Cylinder {
             gamma(3) * norm1(w) * na,
             v,
             gamma(2) * norm1(d) * na,
-            (rh, err + rl.abs(), self.radius * na),
+            (rh, err + rl.abs()),
         )
     }
 
