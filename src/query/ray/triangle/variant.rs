@@ -2,7 +2,7 @@
 //! chooses its variant once and prepares each ray once for all the
 //! triangles it meets: [`TriangleTest`].
 
-use super::{Shear, TriangleHit, closed};
+use super::{ExactRay, Shear, TriangleHit, closed};
 use crate::arith::roundoff::U;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
@@ -101,7 +101,7 @@ pub struct Watertight;
 /// The exact test under the closed-triangle rule
 /// ([`Triangle::cast_exact_closed`]): hit or miss by exact signs, a ray in
 /// the triangle's plane hitting where it enters, `t` within 4 units of
-/// rounding; hits ordered by their exact parameters
+/// rounding; the ray prepared once ([`ExactRay`]); hits ordered by their exact parameters
 /// ([`TriangleTest::precedes`]) and segments decided on their exact ends
 /// ([`Triangle::meets_segment_exact`]).
 #[derive(Clone, Copy, Debug, Default)]
@@ -145,16 +145,16 @@ impl TriangleTest for Watertight {
 }
 
 impl TriangleTest for Exact {
-    type Prepared = Ray;
+    type Prepared = ExactRay;
 
     #[inline]
-    fn prepare(ray: &Ray) -> Ray {
-        *ray
+    fn prepare(ray: &Ray) -> ExactRay {
+        ExactRay::new(ray)
     }
 
     #[inline]
-    fn hit(ray: &Ray, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
-        tri.cast_exact_closed(ray, range)
+    fn hit(ray: &ExactRay, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
+        ray.cast_closed(tri, range)
     }
 
     /// The hit's own `t`: it is the plane parameter already (or the
@@ -201,7 +201,7 @@ impl TriangleTest for Exact {
 
     /// [`Triangle::meets_segment_exact`] from the ray's origin to `q`.
     #[inline]
-    fn segment_hit(ray: &Ray, _prepared: &Ray, q: DVec3, tri: &Triangle) -> bool {
+    fn segment_hit(ray: &Ray, _prepared: &ExactRay, q: DVec3, tri: &Triangle) -> bool {
         tri.meets_segment_exact(ray.origin(), q)
     }
 }
