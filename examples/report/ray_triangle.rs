@@ -2,7 +2,12 @@
 //! crate's three variants (`exactray-mt`, `exactray-watertight`,
 //! `exactray-exact`; `exactray` is the default, the watertight one, which
 //! `RayCast` uses) beside a textbook Möller–Trumbore (`naive`) and
-//! parry3d's triangle cast.
+//! parry3d's triangle cast. The exact variant also on a ray prepared once
+//! (`ExactRay`, as a scene prepares it for all the triangles it meets):
+//! `exactray-exact-prepared` (`t` within 4 ulps) and
+//! `exactray-exact-bounded` (`t` with a certified bound) time the test of
+//! one triangle with the ray prepared beforehand, `exactray-exact-prepare`
+//! the preparation alone (ns per ray; its answers are the prepared ray's).
 //!
 //! Inputs (`exactray::testing::RayTriangleClass` and `TiledMesh`): `uniform` (ordinary rays, about
 //! a third hit), `far` (origins 10^6 to 10^12 away), `near-edge` (aimed at an
@@ -15,21 +20,27 @@
 //! the exact answer (num-bigint; a ray whose line lies in the triangle's
 //! plane counts as a miss, the crate's convention); `max_ulps` is the
 //! largest distance in ulps from a method's `t` to the correctly rounded
-//! exact `t`, over the hits it gets right. On `shared-edges`, an error is a
+//! exact `t`, over the hits it gets right; an answer that comes with a
+//! certified bound (`exactray-exact-bounded`) whose interval misses the
+//! exact `t` is an error too (`../shared/REPORT.md`, "Values that come with
+//! a bound"), and a note gives the bounds' sizes. On `shared-edges`, an error is a
 //! ray that no triangle of the mesh reports (a false miss: the exact line
 //! meets a triangle around the target), and `cases` counts rays; ns/op is
 //! per ray–triangle test there too.
 
 use crate::framework::{Config, Measure, Row, median, method, note, time_methods};
 use exactray::interval::Interval;
-use exactray::query::ray::Ray;
+use exactray::query::ray::{ExactRay, Ray};
 use exactray::shape::Triangle;
 use exactray::testing::{RayTriangleClass, TiledMesh, ray_triangle_case};
 use exactray_oracle::oracle;
 use glam::DVec3;
+use num_bigint::BigInt;
 use parry3d_f64::math::Vector as PVector;
 use parry3d_f64::query::{Ray as PRay, RayCast as PRayCast};
 use parry3d_f64::shape::Triangle as PTriangle;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 /// One ray against one triangle, in every method's own types.
 pub struct Case {
@@ -37,9 +48,24 @@ pub struct Case {
     d: DVec3,
     v: [DVec3; 3],
     ray: Ray,
+    /// The ray prepared for the exact test, as a scene prepares it once.
+    exact_ray: ExactRay,
     tri: Triangle,
     pray: PRay,
     ptri: PTriangle,
+}
+
+/// A method's answer to a case: the hit's `t`, and the certified bound on
+/// its error for a method that returns one.
+#[derive(Clone, Copy, Debug)]
+pub struct Answer {
+    t: f64,
+    bound: Option<f64>,
+}
+
+/// A hit's `t` without a bound.
+fn at(t: f64) -> Answer {
+    Answer { t, bound: None }
 }
 
 impl Case {
@@ -50,6 +76,7 @@ impl Case {
             o,
             d,
             v,
+            exact_ray: ExactRay::new(&ray),
             ray,
             tri: Triangle::new(v[0], v[1], v[2]).ok()?,
             pray: PRay::new(p(o), p(d)),
@@ -83,26 +110,62 @@ pub fn naive(o: DVec3, d: DVec3, [v0, v1, v2]: [DVec3; 3]) -> Option<f64> {
     (t > EPSILON).then_some(t)
 }
 
-type Methods = Vec<Box<dyn Measure<Case, Option<f64>>>>;
+type Methods = Vec<Box<dyn Measure<Case, Option<Answer>>>>;
+
+/// The exact test's per-ray preparation: the timed loop prepares each
+/// case's ray and nothing more; its answers are the prepared ray's
+/// (`ExactRay::cast`), checked as the others are.
+struct Prepare;
+
+impl Measure<Case, Option<Answer>> for Prepare {
+    fn name(&self) -> &'static str {
+        "exactray-exact-prepare"
+    }
+
+    fn answer(&self, c: &Case) -> Option<Answer> {
+        let ray = ExactRay::new(&c.ray);
+        ray.cast(&c.tri, Interval::FORWARD).map(|h| at(h.t))
+    }
+
+    fn run_loop(&self, cases: &[Case], iters: u64) -> Duration {
+        let start = Instant::now();
+        for _ in 0..iters {
+            for c in cases {
+                black_box(ExactRay::new(&black_box(c).ray));
+            }
+        }
+        start.elapsed()
+    }
+}
 
 pub fn methods() -> Methods {
     let f = Interval::FORWARD;
     vec![
         method("exactray", move |c: &Case| {
-            c.tri.cast_watertight(&c.ray, f).map(|h| h.t)
+            c.tri.cast_watertight(&c.ray, f).map(|h| at(h.t))
         }),
         method("exactray-mt", move |c: &Case| {
-            c.tri.cast_mt(&c.ray, f).map(|h| h.t)
+            c.tri.cast_mt(&c.ray, f).map(|h| at(h.t))
         }),
         method("exactray-watertight", move |c: &Case| {
-            c.tri.cast_watertight(&c.ray, f).map(|h| h.t)
+            c.tri.cast_watertight(&c.ray, f).map(|h| at(h.t))
         }),
         method("exactray-exact", move |c: &Case| {
-            c.tri.cast_exact(&c.ray, f).map(|h| h.t)
+            c.tri.cast_exact(&c.ray, f).map(|h| at(h.t))
         }),
-        method("naive", |c: &Case| naive(c.o, c.d, c.v)),
+        method("exactray-exact-prepared", move |c: &Case| {
+            c.exact_ray.cast(&c.tri, f).map(|h| at(h.t))
+        }),
+        method("exactray-exact-bounded", move |c: &Case| {
+            c.exact_ray.cast_bounded(&c.tri, f).map(|h| Answer {
+                t: h.hit.t,
+                bound: Some(h.t_error),
+            })
+        }),
+        Box::new(Prepare),
+        method("naive", |c: &Case| naive(c.o, c.d, c.v).map(at)),
         method("parry3d", |c: &Case| {
-            c.ptri.cast_local_ray(&c.pray, f64::MAX, true)
+            c.ptri.cast_local_ray(&c.pray, f64::MAX, true).map(at)
         }),
     ]
 }
@@ -112,12 +175,26 @@ fn line(c: &Case) -> oracle::LineTriangle {
     oracle::line_triangle(c.o.to_array(), c.d.to_array(), c.v.map(|p| p.to_array()))
 }
 
-/// The exact answer: the correctly rounded `t` of the hit, if any.
-fn exact(c: &Case) -> Option<f64> {
+/// The exact answer: the hit's exact `t` as a fraction, if any.
+fn exact(c: &Case) -> Option<(BigInt, BigInt)> {
     line(c)
         .t
         .filter(|(num, den)| oracle::ratio_in(num, den, 0.0, f64::INFINITY))
-        .map(|(num, den)| oracle::ratio_to_f64(&num, &den))
+}
+
+/// Whether an answer with a bound holds the exact `t` inside it.
+fn within_bound(a: &Answer, (num, den): &(BigInt, BigInt)) -> bool {
+    a.bound.is_none_or(|b| {
+        let (lo, hi) = (a.t - b, a.t + b);
+        oracle::ratio_in(num, den, lo.next_down(), hi.next_up())
+    })
+}
+
+/// A bound's size in ulps of its `t` (of the smallest subnormal for a
+/// zero `t`).
+fn bound_ulps(a: &Answer) -> Option<f64> {
+    let ulp = (a.t.abs().next_up() - a.t.abs()).max(f64::from_bits(1));
+    a.bound.map(|b| b / ulp)
 }
 
 pub fn run(cfg: &Config) -> Vec<Row> {
@@ -125,6 +202,7 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     let checked = cfg.cases / 4;
     let mut rows = Vec::new();
     let mut medians = Vec::new();
+    let mut sizes = Vec::new();
     for class in RayTriangleClass::ALL {
         let inputs = class.name();
         let mut rng = cfg.rng("ray_triangle", inputs);
@@ -135,21 +213,31 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         .flatten()
         .take(checked)
         .collect();
-        let want: Vec<Option<f64>> = cases.iter().map(exact).collect();
+        let want: Vec<Option<(BigInt, BigInt)>> = cases.iter().map(exact).collect();
         let times = time_methods(cfg, &cases[..cfg.working_set.min(cases.len())], &methods);
         for (m, ns) in methods.iter().zip(times) {
             let mut errors = 0;
             let mut ulps = Vec::new();
+            let mut bounds = Vec::new();
             for (c, w) in cases.iter().zip(&want) {
                 match (m.answer(c), w) {
-                    (Some(t), Some(w)) if t.is_finite() && w.is_finite() => {
-                        ulps.push(oracle::ulps_between(t, *w) as f64)
+                    (Some(a), Some(w)) => {
+                        let rounded = oracle::ratio_to_f64(&w.0, &w.1);
+                        if a.t.is_finite() && rounded.is_finite() {
+                            ulps.push(oracle::ulps_between(a.t, rounded) as f64);
+                        }
+                        bounds.extend(bound_ulps(&a));
+                        errors += !within_bound(&a, w) as u64;
                     }
-                    (Some(_), Some(_)) | (None, None) => {}
+                    (None, None) => {}
                     _ => errors += 1,
                 }
             }
             let max = ulps.iter().copied().fold(0.0, f64::max);
+            if !bounds.is_empty() {
+                let largest = bounds.iter().copied().fold(0.0, f64::max);
+                sizes.push((inputs, m.name(), median(bounds), largest));
+            }
             medians.push((inputs, m.name(), median(ulps.clone())));
             rows.push(Row {
                 family: "ray_triangle",
@@ -169,6 +257,12 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     );
     for (inputs, name, m) in medians {
         text += &format!("| {inputs} | {name} | {m} |\n");
+    }
+    text += "\nThe certified bounds on `t` of the methods that return one, in ulps of their `t` \
+             (every exact `t` lies inside its bound, or the answer counts as an error):\n\n\
+             | inputs | method | median bound (ulps) | largest bound (ulps) |\n|---|---|---|---|\n";
+    for (inputs, name, med, largest) in sizes {
+        text += &format!("| {inputs} | {name} | {med:.0} | {largest:.0} |\n");
     }
     text += "\nOn `shared-edges` the errors are false misses: rays aimed at a shared edge or vertex of a tiled \
              height field that no triangle of the mesh reports; `cases` counts rays, ns/op is per \

@@ -29,7 +29,7 @@
 
 use super::super::point_error::exact_t_error;
 use super::plane_parameter::plane_parameter;
-use super::{TriangleHit, closed, largest_axis};
+use super::{TriangleHit, closed, largest_axis, permute};
 use crate::arith::exponent::pow2;
 use crate::arith::magnitude::{larger, smaller};
 use crate::arith::roundoff::{U, gamma};
@@ -121,14 +121,18 @@ impl ExactRay {
     /// coordinates are finite and its direction non-zero).
     #[inline]
     pub fn new(ray: &Ray) -> ExactRay {
-        let kz = largest_axis(ray.direction());
-        let axes = [(kz + 1) % 3, (kz + 2) % 3, kz];
-        let permuted = |v: DVec3| axes.map(|k| v.to_array()[k]);
-        let (d, exact, t_unit) = unit_scaled(permuted(ray.direction()));
+        let (o, d) = (ray.origin(), ray.direction());
+        let kz = largest_axis(d);
+        let (origin, d) = match kz {
+            0 => (permute::<0>(o), permute::<0>(d)),
+            1 => (permute::<1>(o), permute::<1>(d)),
+            _ => (permute::<2>(o), permute::<2>(d)),
+        };
+        let (d, exact, t_unit) = unit_scaled(d);
         ExactRay {
             ray: *ray,
-            axes,
-            origin: permuted(ray.origin()),
+            axes: [(kz + 1) % 3, (kz + 2) % 3, kz],
+            origin,
             d,
             inv_dz: 1.0 / d[2],
             t_unit,
@@ -411,19 +415,16 @@ fn unit_scaled(p: [f64; 3]) -> ([f64; 3], bool, f64) {
     // A subnormal `p[2]` first becomes normal: scaling up is exact; the
     // whole factor `2^(64 - e)` is then beyond the normal numbers.
     let subnormal = biased(p[2]) == 0;
-    let p = if subnormal {
-        p.map(|x| x * pow2(64))
-    } else {
-        p
-    };
+    let pre = if subnormal { pow2(64) } else { 1.0 };
+    let p = [p[0] * pre, p[1] * pre, p[2] * pre];
     let e = biased(p[2]) - 1023;
     if e > 1022 {
         return (p, false, f64::NAN);
     }
-    let d = p.map(|x| x * pow2(-e));
-    let back = pow2(e);
-    let exact = (0..3).all(|i| d[i] * back == p[i]);
-    (d, exact, if subnormal { f64::NAN } else { pow2(-e) })
+    let (down, up) = (pow2(-e), pow2(e));
+    let d = [p[0] * down, p[1] * down, p[2] * down];
+    let exact = d[0] * up == p[0] && d[1] * up == p[1] && d[2] * up == p[2];
+    (d, exact, if subnormal { f64::NAN } else { down })
 }
 
 /// The error bound of the rounded edge functions, from `S`, the largest
