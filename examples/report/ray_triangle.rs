@@ -264,6 +264,10 @@ pub fn run(cfg: &Config) -> Vec<Row> {
     for (inputs, name, med, largest) in sizes {
         text += &format!("| {inputs} | {name} | {med:.0} | {largest:.0} |\n");
     }
+    text += "\n`exactray-exact-prepare` is ns per ray of `ExactRay::new` alone; `exactray-exact-prepared` and \
+             `exactray-exact-bounded` are ns per triangle with the ray prepared beforehand (its two tiers: `t` within 4 \
+             ulps, or with its certified bound). A mesh pays the first once per ray and the second per triangle it \
+             tests; `exactray-exact` pays both on every call.\n";
     text += "\nOn `shared-edges` the errors are false misses: rays aimed at a shared edge or vertex of a tiled \
              height field that no triangle of the mesh reports; `cases` counts rays, ns/op is per \
              ray–triangle test. Coplanar rays count as misses everywhere (the crate's convention).";
