@@ -44,13 +44,10 @@ use std::time::{Duration, Instant};
 
 /// One ray against one triangle, in every method's own types.
 pub struct Case {
-    o: DVec3,
-    d: DVec3,
-    v: [DVec3; 3],
     ray: Ray,
+    tri: Triangle,
     /// The ray prepared for the exact test, as a scene prepares it once.
     exact_ray: ExactRay,
-    tri: Triangle,
     pray: PRay,
     ptri: PTriangle,
 }
@@ -73,9 +70,6 @@ impl Case {
         let p = |x: DVec3| PVector::new(x.x, x.y, x.z);
         let ray = Ray::new(o, d).ok()?;
         Some(Case {
-            o,
-            d,
-            v,
             exact_ray: ExactRay::new(&ray),
             ray,
             tri: Triangle::new(v[0], v[1], v[2]).ok()?,
@@ -163,7 +157,9 @@ pub fn methods() -> Methods {
             })
         }),
         Box::new(Prepare),
-        method("naive", |c: &Case| naive(c.o, c.d, c.v).map(at)),
+        method("naive", |c: &Case| {
+            naive(c.ray.origin(), c.ray.direction(), c.tri.vertices()).map(at)
+        }),
         method("parry3d", |c: &Case| {
             c.ptri.cast_local_ray(&c.pray, f64::MAX, true).map(at)
         }),
@@ -172,7 +168,12 @@ pub fn methods() -> Methods {
 
 /// The exact meeting of the case's line with its triangle.
 fn line(c: &Case) -> oracle::LineTriangle {
-    oracle::line_triangle(c.o.to_array(), c.d.to_array(), c.v.map(|p| p.to_array()))
+    let (o, d) = (c.ray.origin(), c.ray.direction());
+    oracle::line_triangle(
+        o.to_array(),
+        d.to_array(),
+        c.tri.vertices().map(|p| p.to_array()),
+    )
 }
 
 /// The exact answer: the hit's exact `t` as a fraction, if any.
