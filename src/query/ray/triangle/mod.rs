@@ -5,9 +5,9 @@
 //! |---|---|---|---|
 //! | [`Triangle::cast_mt`] (Möller–Trumbore) | may miss on both sides | rounded formula | the reference |
 //! | [`Triangle::cast_watertight`] (Woop, Benthin, Wald) | never missed on both sides | rounded formula | about the same |
-//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | about 2.6x; more within a few ulps of an edge |
-//! | [`ExactRay::cast`] (the ray prepared once) | decided exactly | within 4 ulps | about 2x per triangle |
-//! | [`ExactRay::cast_bounded`] (the ray prepared once) | decided exactly | with a certified bound, at most 1024 ulps | about 1.6x per triangle |
+//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | about 2.7x; more within a few ulps of an edge |
+//! | [`ExactRay::cast`] (the ray prepared once) | decided exactly | within 4 ulps | about 2.2x per triangle |
+//! | [`ExactRay::cast_bounded`] (the ray prepared once) | decided exactly | with a certified bound, at most 1024 ulps | about 1.7x per triangle |
 //!
 //! A mesh prepares each ray once for all the triangles it meets
 //! ([`TriangleTest`]): for the exact test, an [`ExactRay`] (about as long
