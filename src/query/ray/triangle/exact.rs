@@ -140,6 +140,25 @@ impl ExactRay {
         }
     }
 
+    /// `ray` without its preparation: a filter that declines every
+    /// triangle, so that each sign goes to the exact stages, for a caller
+    /// that holds an `ExactRay` it will not cast with
+    /// (`Exact::prepare_segment`). A cast with it still decides hit or miss
+    /// and `t` exactly, but slowly, and its barycentrics may be the crude
+    /// equal weights of the exact non-zero signs.
+    #[inline]
+    pub(super) fn unfiltered(ray: &Ray) -> ExactRay {
+        ExactRay {
+            ray: *ray,
+            axes: [0, 1, 2],
+            origin: ray.origin().to_array(),
+            d: ray.direction().to_array(),
+            inv_dz: f64::NAN,
+            t_unit: f64::NAN,
+            filter_max: f64::NEG_INFINITY,
+        }
+    }
+
     /// The ray as given.
     #[inline]
     pub fn ray(&self) -> &Ray {
@@ -532,10 +551,34 @@ fn barycentrics(w: [f64; 3], s: [Sign; 3], side: f64) -> (f64, f64) {
 }
 
 /// The filter's certified signs on directions whose largest coordinate
-/// is subnormal, and on the rays of issue 12's finding.
+/// is subnormal, and on the rays of issue 12's finding; an unfiltered ray
+/// against a prepared one.
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::{RayTriangleClass, SplitMix64, ray_triangle_case};
+
+    /// A ray that skipped its preparation (`ExactRay::unfiltered`, every
+    /// sign from the exact stages) hits and misses as the prepared one and
+    /// reports the same `t`, on every input class.
+    #[test]
+    fn unfiltered_rays_answer_as_prepared_ones() {
+        let mut hits = 0;
+        for class in RayTriangleClass::ALL {
+            let mut rng = SplitMix64::new(0x5e9);
+            for _ in 0..300 {
+                let (o, d, v) = ray_triangle_case(class, &mut rng);
+                let (Ok(ray), Ok(tri)) = (Ray::new(o, d), Triangle::new(v[0], v[1], v[2])) else {
+                    continue;
+                };
+                let t = |r: ExactRay| r.cast_closed(&tri, Interval::FORWARD).map(|h| h.t);
+                let prepared = t(ExactRay::new(&ray));
+                assert_eq!(t(ExactRay::unfiltered(&ray)), prepared, "{o:?} {d:?} {v:?}");
+                hits += prepared.is_some() as u32;
+            }
+        }
+        assert!(hits > 300, "{hits}");
+    }
 
     /// Every sign the filter certifies is the exact one, on directions
     /// whose largest coordinate is subnormal (and their multiples by

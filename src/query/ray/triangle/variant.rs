@@ -74,8 +74,18 @@ pub trait TriangleTest {
         a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
     }
 
+    /// The setup [`TriangleTest::segment_hit`] is given for `ray`:
+    /// [`TriangleTest::prepare`]'s, unless the test decides segments
+    /// without it ([`Exact`], on the exact segment), which then skips that
+    /// work.
+    #[inline]
+    fn prepare_segment(ray: &Ray) -> Self::Prepared {
+        Self::prepare(ray)
+    }
+
     /// Whether the segment from `ray.origin()` to `q` meets `tri`, with
-    /// `ray` the ray `p + t fl(q - p)` (and `prepared` its setup). The
+    /// `ray` the ray `p + t fl(q - p)` (and `prepared` its setup from
+    /// [`TriangleTest::prepare_segment`]). The
     /// default: a hit of the ray for `t` in `[0, 1]` whose certified `t` is
     /// in `[0, 1]`, so the far end is `p + fl(q - p)`, within a rounding of
     /// `q`. [`Exact`] decides on the exact segment.
@@ -197,6 +207,13 @@ impl TriangleTest for Exact {
             Ordering::Greater => false,
             Ordering::Equal => a.1 < b.1,
         }
+    }
+
+    /// The ray unprepared: segments are decided on the exact segment
+    /// ([`Triangle::meets_segment_exact`]), not with this ray.
+    #[inline]
+    fn prepare_segment(ray: &Ray) -> ExactRay {
+        ExactRay::unfiltered(ray)
     }
 
     /// [`Triangle::meets_segment_exact`] from the ray's origin to `q`.
