@@ -6,9 +6,7 @@
 //! finite input.
 
 use exactray::interval::Interval;
-use exactray::query::ray::EXACT_T_ULPS;
-use exactray::query::ray::Ray;
-use exactray::query::ray::RayCast;
+use exactray::query::ray::{BOUNDED_T_ULPS, EXACT_T_ULPS, ExactRay, Ray, RayCast, TriangleHit};
 use exactray::shape::Triangle;
 use exactray::testing::{
     RayTriangleCase as Case, RayTriangleClass, SplitMix64, TiledMesh, ray_triangle_case, step_ulps,
@@ -24,6 +22,26 @@ fn exact_crossing(c: &Case) -> Option<(num_bigint::BigInt, num_bigint::BigInt)> 
     oracle::line_triangle(o.to_array(), d.to_array(), v.map(|p| p.to_array())).t
 }
 
+/// Whether a cast hit (`hit`) as the oracle demands for the exact
+/// `crossing`, for a `t` within `units` units of rounding
+/// (`oracle::hit_policy`): where either answer is right, no demand.
+fn check_hit(
+    c: &Case,
+    range: Interval,
+    hit: bool,
+    crossing: &Option<(num_bigint::BigInt, num_bigint::BigInt)>,
+    units: f64,
+) -> Result<(), TestCaseError> {
+    let want = match crossing {
+        None => Some(false),
+        Some((num, den)) => oracle::hit_policy(num, den, range.min(), range.max(), units as u32),
+    };
+    if let Some(want) = want {
+        prop_assert_eq!(hit, want, "{:?} {:?}", c, range);
+    }
+    Ok(())
+}
+
 /// The exact variant agrees with the oracle on the hit (the crate's policy,
 /// `oracle::hit_policy`: a crossing beyond `f64`'s range is no hit), its
 /// `t` is within the documented bound, and its barycentrics are in
@@ -37,15 +55,7 @@ fn check_exact(c: &Case, range: Interval) -> Result<(), TestCaseError> {
     };
     let got = tri.cast_exact(&ray, range);
     let crossing = exact_crossing(c);
-    let want = match &crossing {
-        None => Some(false),
-        Some((num, den)) => {
-            oracle::hit_policy(num, den, range.min(), range.max(), EXACT_T_ULPS as u32)
-        }
-    };
-    if let Some(want) = want {
-        prop_assert_eq!(got.is_some(), want, "{:?} {:?}: {:?}", c, range, got);
-    }
+    check_hit(c, range, got.is_some(), &crossing, EXACT_T_ULPS)?;
     if let (Some(hit), Some((num, den))) = (got, crossing) {
         prop_assert!(hit.t.is_finite(), "{:?}: {:?}", c, hit);
         prop_assert!(
@@ -59,6 +69,45 @@ fn check_exact(c: &Case, range: Interval) -> Result<(), TestCaseError> {
         prop_assert!((0.0..=1.0).contains(&hit.u) && (0.0..=1.0).contains(&hit.v));
         prop_assert!(hit.u + hit.v <= 1.0 + 4.0 * f64::EPSILON);
     }
+    check_bounded(c, &ray, &tri, range, got)
+}
+
+/// The bounded tier ([`ExactRay::cast_bounded`]) on the same case: the hit
+/// the oracle demands (the crate's policy for a `t` within
+/// `BOUNDED_T_ULPS`), the precise tier's barycentrics, and the exact `t`
+/// inside the returned bound, itself within `BOUNDED_T_ULPS` units of
+/// rounding. `precise` is `cast_exact`'s answer, which a prepared ray
+/// repeats.
+fn check_bounded(
+    c: &Case,
+    ray: &Ray,
+    tri: &Triangle,
+    range: Interval,
+    precise: Option<TriangleHit>,
+) -> Result<(), TestCaseError> {
+    let prepared = ExactRay::new(ray);
+    prop_assert_eq!(prepared.cast(tri, range), precise);
+    let got = prepared.cast_bounded(tri, range);
+    let crossing = exact_crossing(c);
+    check_hit(c, range, got.is_some(), &crossing, BOUNDED_T_ULPS)?;
+    let (Some(b), Some((num, den))) = (got, crossing) else {
+        return Ok(());
+    };
+    if let Some(p) = precise {
+        prop_assert_eq!((b.hit.u, b.hit.v), (p.u, p.v));
+    }
+    prop_assert!(b.hit.t.is_finite() && range.admits(b.hit.t), "{:?}", b);
+    let (lo, hi) = (b.hit.t - b.t_error, b.hit.t + b.t_error);
+    prop_assert!(
+        oracle::ratio_in(&num, &den, lo.next_down(), hi.next_up()),
+        "exact t {} outside {:?}: {:?}",
+        oracle::ratio_to_f64(&num, &den),
+        b,
+        c
+    );
+    // 2^-1073 for a subnormal `t` (the precise tier's).
+    let most = BOUNDED_T_ULPS * f64::EPSILON / 2.0 * b.hit.t.abs() + f64::from_bits(2);
+    prop_assert!(b.t_error <= most, "{:?}", b);
     Ok(())
 }
 
@@ -190,6 +239,54 @@ proptest! {
             prop_assert!(!got);
         }
     }
+}
+
+/// One prepared ray ([`ExactRay`]) answers each of many triangles as
+/// `cast_exact` and `cast_exact_closed` do (preparing the ray afresh), on
+/// every input class and scaled to tiny, huge and subnormal coordinates;
+/// its bounded tier holds on each (`check_bounded`), and on ordinary rays
+/// it is the cheap formula's bound that answers, not only the precise
+/// tier's.
+#[test]
+fn a_prepared_ray_answers_as_fresh_ones() {
+    let whole = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
+    let mut cheap = 0;
+    for class in RayTriangleClass::ALL {
+        let mut rng = SplitMix64::new(0x9e1);
+        let cases: Vec<Case> = (0..200)
+            .map(|_| ray_triangle_case(class, &mut rng))
+            .collect();
+        for k in [0, -600, 600, -1040] {
+            for (i, c) in cases.iter().enumerate() {
+                let (o, d, _) = scaled(*c, k);
+                let Ok(ray) = Ray::new(o, d) else {
+                    continue;
+                };
+                let prepared = ExactRay::new(&ray);
+                // Its own triangle, then the next cases' (mostly misses).
+                for j in 0..6 {
+                    let (_, _, v) = scaled(cases[(i + j) % cases.len()], k);
+                    let Ok(tri) = Triangle::new(v[0], v[1], v[2]) else {
+                        continue;
+                    };
+                    for range in [Interval::FORWARD, whole] {
+                        let fresh = tri.cast_exact(&ray, range);
+                        assert_eq!(prepared.cast(&tri, range), fresh);
+                        assert_eq!(
+                            prepared.cast_closed(&tri, range),
+                            tri.cast_exact_closed(&ray, range)
+                        );
+                        check_bounded(&(o, d, v), &ray, &tri, range, fresh).unwrap();
+                        let bounded = prepared.cast_bounded(&tri, range);
+                        cheap += bounded.is_some_and(|b| {
+                            b.t_error > 4.0 * f64::EPSILON * b.hit.t.abs() + f64::from_bits(2)
+                        }) as u32;
+                    }
+                }
+            }
+        }
+    }
+    assert!(cheap > 500, "{cheap}");
 }
 
 /// Origins within about `2^-56` of a tilted triangle's plane, relative to

@@ -6,6 +6,12 @@
 //! variants must never panic and must report only finite `t` inside the
 //! interval.
 //!
+//! The same ray prepared once (`ExactRay`) must answer as `cast_exact`
+//! does on both intervals, and its bounded tier (`cast_bounded`) must hit
+//! or miss as the oracle demands for a `t` within `BOUNDED_T_ULPS`, report
+//! the precise tier's barycentrics, and return a bound of at most
+//! `BOUNDED_T_ULPS` units of rounding that holds the exact parameter.
+//!
 //! The first byte picks how the case is built: raw bit patterns (every
 //! finite value), or a generated case (ordinary, far, near an edge,
 //! grazing) edited towards degeneracy: the ray aimed at a vertex or along
@@ -14,8 +20,7 @@
 
 use arbitrary::{Arbitrary, Unstructured};
 use exactray::interval::Interval;
-use exactray::query::ray::EXACT_T_ULPS;
-use exactray::query::ray::Ray;
+use exactray::query::ray::{BOUNDED_T_ULPS, EXACT_T_ULPS, ExactRay, Ray, TriangleHit};
 use exactray::shape::Triangle;
 use exactray::testing::finite_f64_from_bits;
 use exactray::testing::{RayTriangleCase, RayTriangleClass, SplitMix64, ray_triangle_case};
@@ -48,7 +53,7 @@ fn case(u: &mut Unstructured) -> arbitrary::Result<RayTriangleCase> {
     Ok((o * scale, d * scale, v.map(|p| p * scale)))
 }
 
-fn check(o: DVec3, d: DVec3, v: [DVec3; 3], range: Interval) {
+fn check(o: DVec3, d: DVec3, v: [DVec3; 3], prepared: &ExactRay, range: Interval) {
     let (Ok(ray), Ok(tri)) = (Ray::new(o, d), Triangle::new(v[0], v[1], v[2])) else {
         return;
     };
@@ -59,18 +64,42 @@ fn check(o: DVec3, d: DVec3, v: [DVec3; 3], range: Interval) {
         assert!(range.admits(hit.t), "{hit:?} outside {range:?}");
     }
     let got = tri.cast_exact(&ray, range);
+    assert_eq!(
+        prepared.cast(&tri, range),
+        got,
+        "{o:?} {d:?} {v:?} {range:?}"
+    );
     let line = oracle::line_triangle(o.to_array(), d.to_array(), v.map(|p| p.to_array()));
     // The crate's policy: a hit only at a finite t (`Interval::admits`), so
     // a crossing beyond f64's range is no hit; within EXACT_T_ULPS of
     // f64::MAX either answer is right.
-    let want = match &line.t {
+    let want = |units: f64| match &line.t {
         None => Some(false),
-        Some((num, den)) => {
-            oracle::hit_policy(num, den, range.min(), range.max(), EXACT_T_ULPS as u32)
-        }
+        Some((num, den)) => oracle::hit_policy(num, den, range.min(), range.max(), units as u32),
     };
-    if let Some(want) = want {
+    if let Some(want) = want(EXACT_T_ULPS) {
         assert_eq!(got.is_some(), want, "{o:?} {d:?} {v:?} {range:?}: {got:?}");
+    }
+    let bounded = prepared.cast_bounded(&tri, range);
+    if let Some(want) = want(BOUNDED_T_ULPS) {
+        assert_eq!(
+            bounded.is_some(),
+            want,
+            "{o:?} {d:?} {v:?} {range:?}: {bounded:?}"
+        );
+    }
+    if let (Some(b), Some((num, den))) = (bounded, &line.t) {
+        let (lo, hi) = (b.hit.t - b.t_error, b.hit.t + b.t_error);
+        assert!(
+            range.admits(b.hit.t) && oracle::ratio_in(num, den, lo.next_down(), hi.next_up()),
+            "{o:?} {d:?} {v:?}: {b:?}, exact {:e}",
+            oracle::ratio_to_f64(num, den)
+        );
+        let most = BOUNDED_T_ULPS * f64::EPSILON / 2.0 * b.hit.t.abs() + f64::from_bits(2);
+        assert!(b.t_error <= most, "{o:?} {d:?} {v:?}: {b:?}");
+        if let Some(TriangleHit { u, v: w, .. }) = got {
+            assert_eq!((b.hit.u, b.hit.v), (u, w), "{o:?} {d:?} {v:?}");
+        }
     }
     if let (Some(hit), Some((num, den))) = (got, line.t) {
         assert!(hit.t.is_finite(), "{o:?} {d:?} {v:?}: {hit:?}");
@@ -90,11 +119,17 @@ fuzz_target!(|data: &[u8]| {
     let Ok((o, d, v)) = case(&mut u) else {
         return;
     };
-    check(o, d, v, Interval::FORWARD);
+    let Ok(ray) = Ray::new(o, d) else {
+        return;
+    };
+    // One preparation for both intervals, as a scene reuses it.
+    let prepared = ExactRay::new(&ray);
+    check(o, d, v, &prepared, Interval::FORWARD);
     check(
         o,
         d,
         v,
+        &prepared,
         Interval::new(f64::NEG_INFINITY, f64::INFINITY).expect("valid"),
     );
 });

@@ -556,7 +556,7 @@ impl TriangleMesh {
         let mut v = SegmentHit::<T> {
             mesh: self,
             ray: &ray,
-            prepared: T::prepare(&ray),
+            prepared: T::prepare_segment(&ray),
             q,
             found: false,
         };

@@ -21,7 +21,8 @@ use glam::DVec3;
 mod triangle;
 
 pub use triangle::{
-    EXACT_T_ULPS, Exact, MollerTrumbore, TriangleHit, TriangleTest, Watertight, WatertightRay,
+    BOUNDED_T_ULPS, BoundedTriangleHit, EXACT_T_ULPS, Exact, ExactRay, MollerTrumbore, TriangleHit,
+    TriangleTest, Watertight, WatertightRay,
 };
 
 /// The half-line (or line) `origin + t * direction`. The direction need not

@@ -5,7 +5,19 @@
 //! |---|---|---|---|
 //! | [`Triangle::cast_mt`] (Möller–Trumbore) | may miss on both sides | rounded formula | the reference |
 //! | [`Triangle::cast_watertight`] (Woop, Benthin, Wald) | never missed on both sides | rounded formula | about the same |
-//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | about 3x; more within a few ulps of an edge |
+//! | [`Triangle::cast_exact`] | decided exactly | within 4 ulps | about 2.7x; more within a few ulps of an edge |
+//! | [`ExactRay::cast`] (the ray prepared once) | decided exactly | within 4 ulps | about 2.2x per triangle |
+//! | [`ExactRay::cast_bounded`] (the ray prepared once) | decided exactly | with a certified bound, at most 1024 ulps | about 1.7x per triangle |
+//!
+//! A mesh prepares each ray once for all the triangles it meets
+//! ([`TriangleTest`]): for the exact test, an [`ExactRay`] (about as long
+//! as one Möller–Trumbore test) holds the axis of the direction's largest
+//! coordinate and the direction scaled into `[1, 2)`, and each triangle
+//! costs a certified filter over three 2D edge functions of its sheared
+//! vertices (`exact.rs`), then the exact stages only for an edge within a
+//! few units of rounding of the ray; `t` is the double-double plane
+//! parameter (`plane_parameter.rs`), or in the bounded tier the filter's
+//! own barycentric mean with a derived bound.
 //!
 //! Every variant takes a parameter [`Interval`] and reports the hit only
 //! when its computed `t` is finite and lies in it ([`Interval::admits`]):
@@ -29,21 +41,18 @@
 //! Intersection", Journal of Computer Graphics Techniques 2(1), 2013.
 
 use super::{Hit, RayCast};
-use crate::arith::fma_dispatch::{FmaKernel, with_fma};
-use crate::arith::magnitude::{larger, largest_magnitude};
-use crate::arith::roundoff::U;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
-use crate::predicates::orient_dir::orient_dir;
 use crate::query::ray::Ray;
 use plane_parameter::plane_parameter;
 
 mod closed;
+mod exact;
 mod plane_parameter;
 mod variant;
 
 use crate::shape::Triangle;
-use crate::sign::Sign;
+pub use exact::{BOUNDED_T_ULPS, BoundedTriangleHit, ExactRay};
 use glam::DVec3;
 pub use variant::{Exact, MollerTrumbore, TriangleTest, Watertight, WatertightRay};
 
@@ -81,24 +90,6 @@ impl TriangleHit {
         v0 * (1.0 - self.u - self.v) + v1 * self.u + v2 * self.v
     }
 }
-
-/// Orient3d's filter constant `(7 + 56 u) u`, here for `det[d, a_j, e_jk]`
-/// whose rows are the direction and two rounded differences, times the six
-/// products the permanent is bounded by (`6 D M E` for `D` the largest
-/// direction coordinate, `M` the largest vertex-to-origin difference and
-/// `E` the largest edge coordinate), with a margin for the rounding of the
-/// bound itself.
-const EDGE_BOUND: f64 = 6.0 * (7.0 + 56.0 * U) * U * (1.0 + 1.0 / (1u64 << 40) as f64);
-
-/// Beyond this magnitude of the direction or of a difference, the filters
-/// decline: below it no product of three overflows (`2^990`), and the
-/// absolute error of underflowed products (below `2^-1073` per unit of a
-/// coordinate, orient3d's slack terms) stays below [`ABS_SLACK`].
-const FILTER_MAX: f64 = crate::arith::exponent::pow2(330);
-
-/// Absolute error bound added to every filter for underflow: orient3d's
-/// slack, `2^-1073 * 3 * 2^330 + 2^-1071`, is below `2^-740`.
-const ABS_SLACK: f64 = crate::arith::exponent::pow2(-700);
 
 /// The exact variant's promise: `|t - t_exact| <= T_ULPS * 2^-53 * |t_exact|`.
 pub const EXACT_T_ULPS: f64 = 4.0;
@@ -209,6 +200,9 @@ impl Triangle {
     /// the triangle: a ray through a shared edge hits both triangles.
     /// Each sign comes from a floating-point filter, or when the filter
     /// cannot certify it, from the crate's exact orient3d machinery.
+    /// This prepares the ray ([`ExactRay::new`]) and tests the triangle
+    /// with it ([`ExactRay::cast`]): to test many triangles with one ray,
+    /// prepare it once.
     ///
     /// `t` is `det[a_0, e_1, e_2] / det[d, e_1, e_2]`, each determinant
     /// within `1.45 u` of its value, then divided (`u = 2^-53`). A filtered
@@ -228,8 +222,9 @@ impl Triangle {
     /// finite bounds are compared with the returned `t`, so an exact `t`
     /// within 4 ulps of a bound may be placed on either side of it.
     ///
-    /// The barycentric coordinates are rounded quotients of the three
-    /// determinants: exactly zero on the edges the ray meets, in `[0, 1]`.
+    /// The barycentric coordinates are the three rounded determinants (up
+    /// to a common factor) over their sum: exactly zero on the edges the
+    /// ray meets, in `[0, 1]`.
     ///
     /// ```
     /// use exactray::interval::Interval;
@@ -249,11 +244,7 @@ impl Triangle {
     /// ```
     #[inline]
     pub fn cast_exact(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
-        with_fma(&ExactCast::<false> {
-            tri: self,
-            ray,
-            range,
-        })
+        ExactRay::new(ray).cast(self, range)
     }
 
     /// [`Triangle::cast_exact`] under the closed-triangle rule of the
@@ -287,11 +278,7 @@ impl Triangle {
     /// ```
     #[inline]
     pub fn cast_exact_closed(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
-        with_fma(&ExactCast::<true> {
-            tri: self,
-            ray,
-            range,
-        })
+        ExactRay::new(ray).cast_closed(self, range)
     }
 
     /// Whether the closed segment from `p` to `q` meets the closed
@@ -316,171 +303,6 @@ impl Triangle {
     }
 }
 
-/// [`Triangle::cast_exact`], compiled with FMA (and the AVX encoding it
-/// implies) where the CPU has it: the three-operand encoding spares the
-/// register copies of the hot path. `CLOSED`: a coplanar ray hits where it
-/// enters ([`Triangle::cast_exact_closed`]) instead of missing.
-struct ExactCast<'a, const CLOSED: bool> {
-    tri: &'a Triangle,
-    ray: &'a Ray,
-    range: Interval,
-}
-
-impl<const CLOSED: bool> FmaKernel for ExactCast<'_, CLOSED> {
-    type Output = Option<TriangleHit>;
-
-    /// The common cases straight through: three certified signs that
-    /// differ (a miss) or agree (a hit); the others in [`uncertain_cast`].
-    #[inline(always)]
-    fn run(&self) -> Option<TriangleHit> {
-        let (tri, ray, range) = (self.tri, self.ray, self.range);
-        let d = ray.direction();
-        let filter = EdgeFilter::of(ray.origin(), d, &tri.v);
-        let bound = filter.bound;
-        let (w0, w1) = (filter.w(d, 0), filter.w(d, 1));
-        // Two certified opposite signs: a miss before the third.
-        if (w0 > bound && w1 < -bound) || (w0 < -bound && w1 > bound) {
-            return None;
-        }
-        let w = [w0, w1, filter.w(d, 2)];
-        let above =
-            (w[0] > bound) as u8 | ((w[1] > bound) as u8) << 1 | ((w[2] > bound) as u8) << 2;
-        let below =
-            (w[0] < -bound) as u8 | ((w[1] < -bound) as u8) << 1 | ((w[2] < -bound) as u8) << 2;
-        // An early miss on two certified opposite signs.
-        if above != 0 && below != 0 {
-            return None;
-        }
-        if above | below != 0b111 {
-            return uncertain_cast::<CLOSED>(tri, ray, range, w, (above, below));
-        }
-        // Three certified signs alike: a hit of the line, inside the
-        // triangle; `w_i / Σ w` are the barycentrics, the same as
-        // `|w_i| / Σ |w|`.
-        let t = plane_parameter(ray, &tri.v);
-        if !range.admits(t) {
-            return None;
-        }
-        let total = w[0] + w[1] + w[2];
-        Some(TriangleHit {
-            t,
-            u: w[1] / total,
-            v: w[2] / total,
-        })
-    }
-}
-
-/// The exact cast's filter: the rounded edge determinants `w_i = det[d,
-/// a_(i+1), e_i]` (`a_i = v_i - o`, `e_i = v_(i+2) - v_(i+1)`) and one bound
-/// on their errors; a `w_i` beyond `bound` has the exact sign of
-/// `orient_dir(d, o, v_(i+1), v_(i+2))`.
-struct EdgeFilter {
-    a: [DVec3; 3],
-    e: [DVec3; 3],
-    bound: f64,
-}
-
-impl EdgeFilter {
-    #[inline(always)]
-    fn of(o: DVec3, d: DVec3, [v0, v1, v2]: &[DVec3; 3]) -> EdgeFilter {
-        // det[d, a_j, a_k] = det[d, a_j, v_k - v_j]: with the edge as a row,
-        // the rounding of the long rows (a far origin) costs relative to the
-        // edge's length, not to the distance, and the filter certifies far
-        // rays as it does near ones.
-        let a = [*v0 - o, *v1 - o, *v2 - o];
-        let e = [*v2 - *v1, *v0 - *v2, *v1 - *v0];
-        // Every |a_i| is at most |a_0| + |e| (rounded, within 3 u of
-        // that, far inside EDGE_BOUND's margin): one vector instead of three.
-        let em = largest_magnitude(&e);
-        let (m, dm) = (largest_magnitude(&[a[0]]) + em, largest_magnitude(&[d]));
-        // Beyond the filter's range nothing is certified. The bound's own
-        // products are taken with the constant last: a product that
-        // underflows (absolute error at most 2^-1075) is then scaled by at
-        // most one factor below FILTER_MAX = 2^330 and by EDGE_BOUND <
-        // 2^-46, so the computed bound falls short of `EDGE_BOUND D M E` by
-        // less than 3 * 2^-790 beyond its three relative roundings (inside
-        // EDGE_BOUND's margin), far inside ABS_SLACK. (Taking the constant
-        // first, `EDGE_BOUND * dm` underflowed to zero for a subnormal
-        // direction and the filter certified signs it could not: issue 12.)
-        let bound = if larger(larger(m, dm), em) <= FILTER_MAX {
-            m * em * dm * EDGE_BOUND + ABS_SLACK
-        } else {
-            f64::INFINITY
-        };
-        EdgeFilter { a, e, bound }
-    }
-
-    /// `w_i`, rounded.
-    #[inline(always)]
-    fn w(&self, d: DVec3, i: usize) -> f64 {
-        d.dot(self.a[(i + 1) % 3].cross(self.e[i]))
-    }
-}
-
-/// [`Triangle::cast_exact`] where the filter left some of the three signs
-/// uncertain (`above` and `below` mark, bit `i` for `w_i`, the certified
-/// ones): the others exact, then the hit as for certified signs, with the
-/// barycentrics of the zero signs zero. All three signs zero (a ray in the
-/// plane, or a degenerate triangle) is a miss, or with `CLOSED` the
-/// coplanar entry (`closed::coplanar_hit`).
-#[cold]
-#[inline(never)]
-fn uncertain_cast<const CLOSED: bool>(
-    tri: &Triangle,
-    ray: &Ray,
-    range: Interval,
-    w: [f64; 3],
-    (above, below): (u8, u8),
-) -> Option<TriangleHit> {
-    let (o, d) = (ray.origin(), ray.direction());
-    let s = [0, 1, 2].map(|i| {
-        if above >> i & 1 == 1 {
-            Sign::Positive
-        } else if below >> i & 1 == 1 {
-            Sign::Negative
-        } else {
-            orient_dir(d, o, tri.v[(i + 1) % 3], tri.v[(i + 2) % 3])
-        }
-    });
-    let has = |x: Sign| s.contains(&x);
-    let side = match (has(Sign::Positive), has(Sign::Negative)) {
-        (true, true) => return None,
-        (false, false) if CLOSED => return closed::coplanar_hit(tri, ray, range),
-        (false, false) => return None,
-        (true, false) => 1.0,
-        (false, true) => -1.0,
-    };
-    let t = plane_parameter(ray, &tri.v);
-    if !range.admits(t) {
-        return None;
-    }
-    let (u, v) = barycentrics(w, s, side);
-    Some(TriangleHit { t, u, v })
-}
-
-/// Barycentrics `(u, v)` from the rounded determinants `w`, on the exact
-/// side: zero where the exact sign `s` is, never negative.
-#[inline(always)]
-fn barycentrics(w: [f64; 3], s: [Sign; 3], side: f64) -> (f64, f64) {
-    let wz = [0, 1, 2].map(|i| {
-        if s[i] == Sign::Zero {
-            0.0
-        } else {
-            (w[i] * side).max(0.0)
-        }
-    });
-    let total = wz[0] + wz[1] + wz[2];
-    if total > 0.0 && total.is_finite() {
-        (wz[1] / total, wz[2] / total)
-    } else {
-        // Every rounded determinant vanished or overflowed while the
-        // exact signs did not: weigh the non-zero ones equally.
-        let nz = s.map(|x| (x != Sign::Zero) as u8 as f64);
-        let k = nz[0] + nz[1] + nz[2];
-        (nz[1] / k, nz[2] / k)
-    }
-}
-
 /// A ray prepared for the watertight test: its origin, and its direction
 /// scaled by a power of two and permuted so that its largest coordinate
 /// comes last.
@@ -497,6 +319,20 @@ pub(super) struct Shear {
     scale: f64,
 }
 
+/// The axis of `d`'s largest coordinate in magnitude (the first of equal
+/// ones), `kz` of the watertight and exact tests' permutations.
+#[inline(always)]
+fn largest_axis(d: DVec3) -> usize {
+    let a = d.abs();
+    if a.x >= a.y {
+        if a.x >= a.z { 0 } else { 2 }
+    } else if a.y >= a.z {
+        1
+    } else {
+        2
+    }
+}
+
 /// `p`'s coordinates in the order `kx, ky, kz` for `kz = K`.
 #[inline(always)]
 fn permute<const K: usize>(p: DVec3) -> [f64; 3] {
@@ -511,14 +347,7 @@ impl Shear {
     #[inline(always)]
     pub(super) fn of(ray: &Ray) -> Shear {
         let d = ray.direction();
-        let a = d.abs();
-        let kz = if a.x >= a.y {
-            if a.x >= a.z { 0 } else { 2 }
-        } else if a.y >= a.z {
-            1
-        } else {
-            2
-        };
+        let kz = largest_axis(d);
         let p = match kz {
             0 => permute::<0>(d),
             1 => permute::<1>(d),
@@ -648,55 +477,5 @@ impl RayCast for Triangle {
     #[inline]
     fn hits(&self, ray: &Ray, range: Interval) -> bool {
         self.cast_watertight(ray, range).is_some() && self.normal() != DVec3::ZERO
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every sign the filter certifies is the exact one, on directions
-    /// whose largest coordinate is subnormal (and their multiples by
-    /// `2^k`): issue 12's fuzzer finding, a huge and nearly flat triangle
-    /// where the bound once underflowed to zero and a wrong sign was
-    /// certified; and a huge well-shaped triangle, whose signs the filter
-    /// must still certify.
-    #[test]
-    fn certified_signs_are_exact_for_subnormal_directions() {
-        let b = f64::from_bits;
-        let finding = crate::testing::ray_triangle_finding(0).expect("issue 12's finding");
-        let big = crate::arith::exponent::pow2(200);
-        let well_shaped = (
-            DVec3::ZERO,
-            DVec3::new(b(3), b(5), b(1 << 40)),
-            [
-                DVec3::new(-1.0, -1.0, 1.0),
-                DVec3::new(1.0, -1.0, 1.0),
-                DVec3::new(0.0, 1.0, 1.0),
-            ]
-            .map(|p| p * big),
-        );
-        for (case, (o, d, v)) in [finding, well_shaped].into_iter().enumerate() {
-            let mut certified = 0;
-            for k in 0..60 {
-                let d = d * crate::arith::exponent::pow2(k);
-                let filter = EdgeFilter::of(o, d, &v);
-                for i in 0..3 {
-                    let w = filter.w(d, i);
-                    if w.abs() > filter.bound {
-                        certified += 1;
-                        let exact = orient_dir(d, o, v[(i + 1) % 3], v[(i + 2) % 3]);
-                        assert_eq!(
-                            Sign::of_f64(w),
-                            exact,
-                            "case {case}, 2^{k} d, edge {i}: {w:e}"
-                        );
-                    }
-                }
-            }
-            // The finding is too ill-conditioned for the filter at any
-            // scale; the well-shaped triangle is certified at every one.
-            assert_eq!(certified, [0, 180][case], "case {case}");
-        }
     }
 }

@@ -2,7 +2,7 @@
 //! chooses its variant once and prepares each ray once for all the
 //! triangles it meets: [`TriangleTest`].
 
-use super::{Shear, TriangleHit, closed};
+use super::{ExactRay, Shear, TriangleHit, closed};
 use crate::arith::roundoff::U;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
@@ -74,8 +74,18 @@ pub trait TriangleTest {
         a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
     }
 
+    /// The setup [`TriangleTest::segment_hit`] is given for `ray`:
+    /// [`TriangleTest::prepare`]'s, unless the test decides segments
+    /// without it ([`Exact`], on the exact segment), which then skips that
+    /// work.
+    #[inline]
+    fn prepare_segment(ray: &Ray) -> Self::Prepared {
+        Self::prepare(ray)
+    }
+
     /// Whether the segment from `ray.origin()` to `q` meets `tri`, with
-    /// `ray` the ray `p + t fl(q - p)` (and `prepared` its setup). The
+    /// `ray` the ray `p + t fl(q - p)` (and `prepared` its setup from
+    /// [`TriangleTest::prepare_segment`]). The
     /// default: a hit of the ray for `t` in `[0, 1]` whose certified `t` is
     /// in `[0, 1]`, so the far end is `p + fl(q - p)`, within a rounding of
     /// `q`. [`Exact`] decides on the exact segment.
@@ -101,7 +111,7 @@ pub struct Watertight;
 /// The exact test under the closed-triangle rule
 /// ([`Triangle::cast_exact_closed`]): hit or miss by exact signs, a ray in
 /// the triangle's plane hitting where it enters, `t` within 4 units of
-/// rounding; hits ordered by their exact parameters
+/// rounding; the ray prepared once ([`ExactRay`]); hits ordered by their exact parameters
 /// ([`TriangleTest::precedes`]) and segments decided on their exact ends
 /// ([`Triangle::meets_segment_exact`]).
 #[derive(Clone, Copy, Debug, Default)]
@@ -145,16 +155,16 @@ impl TriangleTest for Watertight {
 }
 
 impl TriangleTest for Exact {
-    type Prepared = Ray;
+    type Prepared = ExactRay;
 
     #[inline]
-    fn prepare(ray: &Ray) -> Ray {
-        *ray
+    fn prepare(ray: &Ray) -> ExactRay {
+        ExactRay::new(ray)
     }
 
     #[inline]
-    fn hit(ray: &Ray, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
-        tri.cast_exact_closed(ray, range)
+    fn hit(ray: &ExactRay, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
+        ray.cast_closed(tri, range)
     }
 
     /// The hit's own `t`: it is the plane parameter already (or the
@@ -199,9 +209,16 @@ impl TriangleTest for Exact {
         }
     }
 
+    /// The ray unprepared: segments are decided on the exact segment
+    /// ([`Triangle::meets_segment_exact`]), not with this ray.
+    #[inline]
+    fn prepare_segment(ray: &Ray) -> ExactRay {
+        ExactRay::unfiltered(ray)
+    }
+
     /// [`Triangle::meets_segment_exact`] from the ray's origin to `q`.
     #[inline]
-    fn segment_hit(ray: &Ray, _prepared: &Ray, q: DVec3, tri: &Triangle) -> bool {
+    fn segment_hit(ray: &Ray, _prepared: &ExactRay, q: DVec3, tri: &Triangle) -> bool {
         tri.meets_segment_exact(ray.origin(), q)
     }
 }
