@@ -32,8 +32,9 @@ fn cross(a: &V, b: &V) -> V {
     ]
 }
 
-/// A parameter `num / den` with `den > 0`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// A parameter `num / den` with `den > 0`, not reduced: equal fractions
+/// compare equal by value (`2k / k == 2 / 1`), as their order does.
+#[derive(Clone, Debug)]
 pub struct Frac {
     /// The numerator.
     pub num: BigInt,
@@ -58,6 +59,14 @@ impl Frac {
         Frac::new(BigInt::from(v), BigInt::from(1))
     }
 }
+
+impl PartialEq for Frac {
+    fn eq(&self, other: &Frac) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Frac {}
 
 impl PartialOrd for Frac {
     fn partial_cmp(&self, other: &Frac) -> Option<Ordering> {
