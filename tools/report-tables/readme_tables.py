@@ -162,7 +162,15 @@ def cell(r, fmt):
 
 PREDICATE_FAMILIES = ["orient2d", "orient3d", "incircle", "insphere", "plane_side"]
 QUADRIC_FAMILIES = ["ray_sphere", "ray_cylinder", "ray_cone", "ray_quadric"]
-TRIANGLE_METHODS = ["exactray-mt", "exactray-watertight", "exactray-exact", "naive", "parry3d"]
+TRIANGLE_METHODS = [
+    "exactray-mt",
+    "exactray-watertight",
+    "exactray-exact",
+    "exactray-exact-prepared",
+    "exactray-exact-bounded",
+    "naive",
+    "parry3d",
+]
 
 
 def predicates(rep, cells):
@@ -379,13 +387,14 @@ TABLES = [
     ),
     (
         "Ray–triangle: time and wrong",
-        "| inputs | MT ns (wrong) | watertight ns (wrong) | exact ns (wrong) | naive ns (wrong) | parry3d ns (wrong) |",
+        "| inputs | MT ns (wrong) | watertight ns (wrong) | exact ns (wrong) | exact prepared ns (wrong) "
+        "| exact bounded ns (wrong) | naive ns (wrong) | parry3d ns (wrong) |",
         triangle,
         ["ray_triangle"],
     ),
     (
         "Ray–triangle: largest ulps",
-        "| inputs | MT | watertight | exact | naive | parry3d |",
+        "| inputs | MT | watertight | exact | exact prepared | exact bounded | naive | parry3d |",
         triangle_ulps,
         ["ray_triangle"],
     ),
