@@ -2,7 +2,7 @@
 
 use super::point_error::dot_error;
 use super::{Hit, Precise, RayCast, unit_or};
-use crate::arith::error_free::exact_difference;
+use crate::arith::error_free::{exact_difference, two_prod, two_sum};
 use crate::arith::exponent::{Grain, pow2, scale_pow2, unit_scale};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3, limbs_of_degree};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
@@ -14,6 +14,7 @@ use crate::roots::bounded::{Place, Tier, both_bounded, precise, quotient_error};
 use crate::roots::certified::{
     AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
 };
+use crate::roots::radial::scaled_square;
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Cone;
 use glam::DVec3;
@@ -265,19 +266,128 @@ impl ScaledLine {
 }
 
 /// The cone's exact polynomial along the scaled line, `P(x) = s |x x a|^2
-/// - r^2 (x . a)^2` at `x = w + tau d`.
+/// - r^2 (x . a)^2 = s^2 |x|^2 - (s + r^2) (x . a)^2` at `x = w + tau d`
+/// (`s = |a|^2`; `|x x a|^2 = s |x|^2 - (x . a)^2`).
 struct Lateral {
     wh: DVec3,
     wl: DVec3,
     d: DVec3,
     a: DVec3,
+    /// `s` and `r^2`, rounded: the working-precision evaluation's.
     s: f64,
     rr: f64,
+    /// `s^2` and `s + r^2` as double-doubles: the double-double one's.
+    ss: Near,
+    sr: Near,
+}
+
+/// A double-double `hi + lo` within `err` of the exact value it stands for.
+#[derive(Clone, Copy, Debug)]
+struct Near {
+    hi: f64,
+    lo: f64,
+    err: f64,
+}
+
+impl Near {
+    /// `|hi| + |lo|`: at least the pair's own magnitude.
+    #[inline(always)]
+    fn magnitude(self) -> f64 {
+        self.hi.abs() + self.lo.abs()
+    }
+
+    /// The square of the value `self` stands for: `hi^2` exactly as a
+    /// pair (TwoProduct; Higham, *Accuracy and Stability*, 2nd ed., §4.3),
+    /// its low part with `2 hi lo` in one FMA (one rounding, `u |lo'|`),
+    /// `lo^2` dropped, and the error `δ` carried through `(v + δ)^2 - v^2 =
+    /// δ (2 v + δ)`. The sum `q + lo'` is not normalized: its parts are the
+    /// exact `hi^2` and the low-order rest. Exact unless a product
+    /// underflows (the caller's slack).
+    #[inline(always)]
+    fn square(self) -> Near {
+        let (q, ql) = two_prod(self.hi, self.hi);
+        let lo = fma(2.0 * self.hi, self.lo, ql);
+        Near {
+            hi: q,
+            lo,
+            err: U * lo.abs() + self.lo * self.lo + self.err * (2.0 * self.magnitude() + self.err),
+        }
+    }
+
+    /// The product of the values `self` and `x` stand for: `hi hi'` as an
+    /// exact pair, the cross terms `hi lo'` and `lo hi'` added to its low
+    /// part by two FMAs (every term of the low part through at most two
+    /// roundings: `gamma(2)` of their magnitudes), `lo lo'` dropped, and
+    /// the errors carried through `(v + δ)(x + ε) - v x = δ (x + ε) + v ε`
+    /// with `|v| <= |hi| + |lo|` and `|x + ε| <= |hi'| + |lo'| + err'`.
+    #[inline(always)]
+    fn times(self, x: Near) -> Near {
+        let (p, pl) = two_prod(self.hi, x.hi);
+        let (cross1, cross2) = (self.hi * x.lo, self.lo * x.hi);
+        let lo = fma(self.hi, x.lo, fma(self.lo, x.hi, pl));
+        Near {
+            hi: p,
+            lo,
+            err: gamma(2) * (pl.abs() + cross1.abs() + cross2.abs())
+                + (self.lo * x.lo).abs()
+                + self.err * (x.magnitude() + x.err)
+                + self.magnitude() * x.err,
+        }
+    }
+
+    /// The sum of three values, their high parts summed exactly (TwoSum)
+    /// and the five low-order terms (three low parts, two TwoSum errors)
+    /// in a tree of depth three: within `gamma(3)` of their magnitudes
+    /// (Higham §4.2) besides the three errors.
+    #[inline(always)]
+    fn sum3([x, y, z]: [Near; 3]) -> Near {
+        let (s1, g1) = two_sum(x.hi, y.hi);
+        let (hi, g2) = two_sum(s1, z.hi);
+        let lo = (x.lo + y.lo) + (z.lo + (g1 + g2));
+        let terms = x.lo.abs() + y.lo.abs() + z.lo.abs() + g1.abs() + g2.abs();
+        Near {
+            hi,
+            lo,
+            err: gamma(3) * terms + x.err + y.err + z.err,
+        }
+    }
+
+    /// The difference `self - x` rounded to one `f64`, and a bound on its
+    /// distance from the difference of the exact values: the high parts
+    /// exactly (TwoSum), the three low-order terms with two roundings
+    /// (`gamma(2)`), the result once more (`u` of it).
+    #[inline(always)]
+    fn minus(self, x: Near) -> (f64, f64) {
+        let (f, fe) = two_sum(self.hi, -x.hi);
+        let tail = (self.lo - x.lo) + fe;
+        let value = f + tail;
+        let e =
+            gamma(2) * (self.lo.abs() + x.lo.abs() + fe.abs()) + U * value.abs() + self.err + x.err;
+        (value, e)
+    }
 }
 
 impl Lateral {
+    /// The polynomial's inputs, with `s^2` and `s + r^2` as double-doubles:
+    /// `s` from `scaled_square` (within its returned bound), `r^2` exactly
+    /// as a pair (TwoProduct) unless it underflows.
     #[inline(always)]
     fn of(line: &ScaledLine) -> Lateral {
+        let (sh, sl, e_s) = scaled_square(1.0, line.a);
+        let s = Near {
+            hi: sh,
+            lo: sl,
+            err: e_s,
+        };
+        let (rh, rl) = two_prod(line.r, line.r);
+        let (v, vl) = two_sum(sh, rh);
+        let sr = Near {
+            hi: v,
+            lo: vl + (sl + rl),
+            // The low part's two roundings, and the inputs' errors: `r^2`
+            // is off by at most `2^-1074` where it underflows.
+            err: gamma(2) * (vl.abs() + sl.abs() + rl.abs()) + e_s + ETA,
+        };
         Lateral {
             wh: line.wh,
             wl: line.wl,
@@ -285,39 +395,71 @@ impl Lateral {
             a: line.a,
             s: line.a.dot(line.a),
             rr: line.r * line.r,
+            ss: s.square(),
+            sr,
         }
+    }
+
+    /// `x = w + tau d` per component as a double-double `xh + xl` (`|xl|
+    /// <= u |xh|`) with a bound on its distance from the exact point: `tau
+    /// d_i` and its sum with `wh_i` exactly (TwoProduct, TwoSum), the two
+    /// low-order terms and `wl_i` summed with two roundings, each within
+    /// `u` of its result, and the pair renormalized exactly (TwoSum: for a
+    /// far origin the low-order terms, of the size of `u |w|`, dwarf `u
+    /// |x|`, and their squares would not be negligible). A TwoProduct error
+    /// that underflows is off by at most `2^-1075` (`ETA`).
+    #[inline(always)]
+    fn point(&self, t: f64) -> [Near; 3] {
+        let component = |i: usize| {
+            let (ph, pl) = two_prod(t, self.d[i]);
+            let (sh, sl) = two_sum(self.wh[i], ph);
+            let tail = sl + pl;
+            let lo = tail + self.wl[i];
+            let (hi, lo2) = two_sum(sh, lo);
+            Near {
+                hi,
+                lo: lo2,
+                err: U * (tail.abs() + lo.abs()) + ETA,
+            }
+        };
+        // Not `array::from_fn`, whose closure may escape the FMA kernel.
+        [component(0), component(1), component(2)]
     }
 }
 
+/// Beyond this magnitude of the point the evaluations decline (an infinite
+/// bound): below it, no product they form overflows, and an absolute error
+/// of `2^-1075` from an underflow grows through their later factors (at
+/// most `|x|` and three below 3) to less than `2^-760`.
+const POINT_LIMIT: f64 = pow2(300);
+
 impl Polynomial for Lateral {
-    /// One evaluation serves both: its bound is relative to the point near
-    /// the surface, not to `|w|`, so there is no cheaper one worth trying.
-    const TRY_FAST: bool = false;
+    /// The working-precision bound is relative to the point's own
+    /// magnitude, which for far origins (where `|tau d|` dwarfs `|x|`)
+    /// certifies most roots; near the cone it rarely does.
+    const TRY_FAST: bool = true;
 
-    #[inline(always)]
-    fn eval_fast(&self, t: f64) -> (f64, f64) {
-        self.eval_precise(t)
-    }
-
-    /// `P(x)` at the computed `x`, with a rigorous bound on its distance
-    /// from `P` at the exact `w + tau d`.
+    /// `P(x)` in the cross form at the computed `x`, with a rigorous bound
+    /// on its distance from `P` at the exact `w + tau d`.
     ///
     /// `x_i = fl(fl(fma(tau, d_i, wh_i)) + wl_i)` rounds twice, so it is
     /// within `ex_i = u (|f_i| + |x_i|)` (and `2^-1075` for an underflow)
-    /// of the exact point. `P` is a quadratic form in `x`, so with `x` off
-    /// by `δ`, `P(x + δ) - P(x) = ∇P(x) . δ + P(δ)`, with `∇P = 2 s (s x -
-    /// h a) - 2 r^2 h a` (`h = x . a`, from `|x x a|^2 = |x|^2 s - h^2`),
-    /// bounded by the magnitudes, and `|P(δ)| <= s (s + r^2) |δ|^2`. `P` at
-    /// the computed `x` takes at most 7 roundings on any term's path
-    /// (`x x a` 2, its square and sum 5, times `s` 6; `h` 3, times `r^2`
-    /// and `h` 5; the difference 7): `gamma(7)` of its terms' magnitudes
-    /// (Higham §3.1). The bound's own roundings (sums and products of
-    /// nonnegative values, at most 10 on a path) take `1 + gamma(10)`.
-    /// With `|x|` below `2^300` and every other factor below 3, an
-    /// underflow loses at most `2^-770` from any term: `16 ETA` covers
-    /// them; beyond `2^300` the bound is infinite.
+    /// of the exact point. `P` is a quadratic form in `x`, `P(x) = x^T M x`
+    /// with `M = s^2 I - (s + r^2) a a^T`, so with `x` off by `δ`, `P(x +
+    /// δ) - P(x) = ∇P(x) . δ + P(δ)`, with `∇P = 2 (s^2 x - (s + r^2) h a)`
+    /// (`h = x . a`) bounded by the magnitudes, and `|P(δ)| <= s (s + r^2)
+    /// |δ|^2` (`M`'s eigenvalues are `s^2` and `-s r^2`). `P` at the
+    /// computed `x` takes at most 10 roundings on any term's path (`x x a`
+    /// 2, its square and sum 5, `s` 3 and the product 9; `h` 3, `r^2` 1,
+    /// `r^2 h` 5, times `h` 9; the difference 10): `gamma(10)` of its
+    /// terms' magnitudes (Higham §3.1). The bound's own roundings (sums and
+    /// products of nonnegative values, at most 10 on a path) take `1 +
+    /// gamma(10)`. Below [`POINT_LIMIT`], an underflow inside `x`, `y` or
+    /// `h` loses less than `2^-760` from any term (`16 ETA`); `s` and `r^2`
+    /// that underflow (at most `2^-1074` off each) are scaled by `|y|^2`
+    /// and `h^2`, which may be as large as `2^602`: `ETA` times those.
     #[inline(always)]
-    fn eval_precise(&self, t: f64) -> (f64, f64) {
+    fn eval_fast(&self, t: f64) -> (f64, f64) {
         let (a, s, rr) = (self.a, self.s, self.rr);
         let f = DVec3::new(
             fma(t, self.d.x, self.wh.x),
@@ -326,7 +468,7 @@ impl Polynomial for Lateral {
         );
         let x = f + self.wl;
         let xm = x.abs();
-        if !xm.is_finite() || xm.max_element() >= pow2(300) {
+        if !xm.cmplt(DVec3::splat(POINT_LIMIT)).all() {
             return (0.0, f64::INFINITY);
         }
         let ex = (f.abs() + xm) * U + DVec3::splat(2.0 * ETA);
@@ -336,8 +478,41 @@ impl Polynomial for Lateral {
         let terms = s * ym.dot(ym) + rr * hm * hm;
         let grad = (xm * (s * s) + am * ((s + rr) * hm)) * 2.0;
         let propagated = grad.dot(ex) + s * (s + rr) * ex.dot(ex);
-        let e = (gamma(7) * terms + propagated) * (1.0 + gamma(10)) + 16.0 * ETA;
+        let underflow = ETA * (ym.dot(ym) + hm * hm) + 16.0 * ETA;
+        let e = (gamma(10) * terms + propagated) * (1.0 + gamma(10)) + underflow;
         (value, e)
+    }
+
+    /// `P(x) = s^2 |x|^2 - (s + r^2) h^2` in double-double at `x = w + tau
+    /// d` ([`Lateral::point`]), `h = x . a`, with a rigorous bound: every
+    /// step a [`Near`] operation, whose bound covers its own roundings,
+    /// the terms it drops and its inputs' errors. `h`: the three products
+    /// `xh_i a_i` exactly (TwoProduct, `a` exact), their sum exactly
+    /// ([`Near::sum3`]), and the low parts `xl_i a_i` (one FMA each with
+    /// the product's error: within `u` of the magnitudes, `gamma(3)` with
+    /// the sum's tree), the point's errors through `|a_i|`. The bound's own
+    /// roundings (sums and products of nonnegative values, at most 12 on a
+    /// path) take `1 + gamma(12)`; below [`POINT_LIMIT`], underflows lose
+    /// less than `2^-760` (`4 ETA`).
+    #[inline(always)]
+    fn eval_precise(&self, t: f64) -> (f64, f64) {
+        let x = self.point(t);
+        if !(x.iter().all(|c| c.hi.abs() < POINT_LIMIT)) {
+            return (0.0, f64::INFINITY);
+        }
+        let xx = Near::sum3([x[0].square(), x[1].square(), x[2].square()]);
+        let times_a = |i: usize| {
+            let (p, pl) = two_prod(x[i].hi, self.a[i]);
+            let (lo, am) = (fma(x[i].lo, self.a[i], pl), self.a[i].abs());
+            Near {
+                hi: p,
+                lo,
+                err: U * (pl.abs() + (x[i].lo * am).abs()) + x[i].err * am,
+            }
+        };
+        let h = Near::sum3([times_a(0), times_a(1), times_a(2)]);
+        let (value, e) = self.ss.times(xx).minus(self.sr.times(h.square()));
+        (value, e * (1.0 + gamma(12)) + 4.0 * ETA)
     }
 }
 
@@ -562,5 +737,102 @@ impl RayCast for Precise<Cone> {
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
         Some(self.0.first_bounded(ray, range, Tier::Precise)?.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{ConeRayClass, SplitMix64, cone_ray_case, step_ulps};
+    use exactray_oracle::line_oracle::{Dyadic, Quadratic};
+    use std::vec::Vec;
+
+    /// The scaled line of a cone and a ray, and its exact polynomial in
+    /// `tau` (`w = wh + wl` as `wh - (-wl)`).
+    fn scaled_case(o: DVec3, d: DVec3, apex: DVec3, a: DVec3, r: f64) -> (ScaledLine, Quadratic) {
+        let cone = Cone::infinite(apex, a, r).unwrap();
+        let line = cone.scaled(&Ray::new(o, d).unwrap()).unwrap();
+        let exact = Quadratic::cone(
+            line.wh.to_array(),
+            line.d.to_array(),
+            (-line.wl).to_array(),
+            line.a.to_array(),
+            line.r,
+        );
+        (line, exact)
+    }
+
+    /// Whether `|P(tau) - value| <= e`, decided exactly.
+    fn holds(exact: &Quadratic, tau: f64, (value, e): (f64, f64)) -> bool {
+        if e == f64::INFINITY {
+            return true;
+        }
+        let t = Dyadic::from_f64(tau);
+        let p = exact.a.mul(&t).add(&exact.b).mul(&t).add(&exact.c);
+        let diff = p.sub(&Dyadic::from_f64(value));
+        let e = Dyadic::from_f64(e);
+        diff.sub(&e).sign() <= 0 && diff.add(&e).sign() >= 0
+    }
+
+    /// Both evaluations' bounds hold at the exact roots' roundings and a
+    /// few ulps off them, and at points along the line, for the report's
+    /// rays, the same at scales `2^±600` per group, and needle-thin and
+    /// flat cones; at the roots the double-double bound is `O(u^2)` of
+    /// the terms (it certifies roots the working-precision one cannot,
+    /// whose bound is `O(u)` of them).
+    #[test]
+    fn evaluations_bound_their_errors() {
+        let mut rng = SplitMix64::new(5);
+        let mut tight = 0;
+        let mut roots = 0;
+        for case in 0..600 {
+            let c = cone_ray_case(ConeRayClass::ALL[case % 2], &mut rng);
+            let (so, sd, sa) = match case % 5 {
+                0 | 1 => (0, 0, 0),
+                2 => (600, -600, 300),
+                3 => (-600, 300, -300),
+                _ => (0, 0, 0),
+            };
+            let thin = match case % 7 {
+                0 => 1e-200,
+                1 => 1e100,
+                _ => 1.0,
+            };
+            let at = |v: DVec3, k: i32| v * 2f64.powi(k);
+            let (line, exact) = scaled_case(
+                at(DVec3::from(c.origin), so),
+                at(DVec3::from(c.direction), sd),
+                at(c.apex(), so),
+                at(c.axis(), sa),
+                c.radius * thin * 2f64.powi(sa),
+            );
+            let lateral = Lateral::of(&line);
+            let answer = exact.answer();
+            let mut taus: Vec<f64> = (0..3).map(|_| rng.next_f64() * 8.0 - 4.0).collect();
+            for &root in &answer.roots {
+                for k in [-3, 0, 2] {
+                    taus.push(step_ulps(root, k));
+                }
+            }
+            for &tau in &taus {
+                let fast = lateral.eval_fast(tau);
+                let precise = lateral.eval_precise(tau);
+                assert!(holds(&exact, tau, fast), "fast {case} {tau}: {fast:?}");
+                assert!(holds(&exact, tau, precise), "dd {case} {tau}: {precise:?}");
+            }
+            if thin == 1.0 && (so, sd, sa) == (0, 0, 0) {
+                for &root in &answer.roots {
+                    let x = lateral.point(root);
+                    let xx: f64 = x.iter().map(|c| c.hi * c.hi).sum();
+                    let scale = lateral.ss.hi * xx;
+                    roots += 1;
+                    // `O(u^2)` of the terms, times `|w| / |x|` (up to `2^27`
+                    // for far origins) from the point's own error.
+                    let limit = if case % 2 == 0 { pow2(-95) } else { pow2(-70) };
+                    tight += usize::from(lateral.eval_precise(root).1 <= scale * limit);
+                }
+            }
+        }
+        assert!(tight == roots && roots > 100, "{tight} of {roots}");
     }
 }
