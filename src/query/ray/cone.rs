@@ -10,7 +10,9 @@ use crate::arith::roundoff::{U, gamma};
 use crate::arith::std_or_libm::fma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::{Place, Tier, both_bounded, precise, quotient_error};
+use crate::roots::bounded::{
+    Place, Tier, both_bounded, certified_negative, precise, quotient_error, stable_pair,
+};
 use crate::roots::certified::{
     AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
 };
@@ -130,6 +132,20 @@ struct ScaledLine {
     back: i32,
 }
 
+impl ScaledLine {
+    /// The coefficients' inputs: `w` as its high part, within `|wl|_1`.
+    #[inline(always)]
+    fn line(&self) -> Line {
+        Line {
+            w: self.wh,
+            ew1: norm1(self.wl),
+            d: self.d,
+            a: self.a,
+            r: self.r,
+        }
+    }
+}
+
 /// The filtered stage, run with hardware FMA where the CPU has it.
 struct Filtered<'a> {
     line: &'a ScaledLine,
@@ -140,9 +156,8 @@ impl FmaKernel for Filtered<'_> {
 
     #[inline(always)]
     fn run(&self) -> Option<Roots> {
-        let line = self.line;
-        let k = line.coeffs()?;
-        AllRoots.answer(&k, &Lateral::of(line))
+        let (k, _) = self.line.line().filtered()?;
+        AllRoots.answer(&k, &Lateral::of(self.line))
     }
 }
 
@@ -158,110 +173,200 @@ fn abs_cross(x: DVec3, y: DVec3) -> DVec3 {
     )
 }
 
-impl ScaledLine {
-    /// The lateral quadratic's half-form coefficients `A tau^2 + 2 B tau +
-    /// C` from `wh` (`w` rounded once), with error bounds; `None` where the
-    /// terms' magnitudes leave the filter's range.
-    ///
-    /// Each coefficient is a polynomial in the exact inputs; computed with
-    /// at most `k` roundings on any term's path (`w` 1, `u = w x a` 3,
-    /// `v = d x a` 2, `p = w . a` 4, `q = d . a` 3, `s = a . a` 3; `A`
-    /// at most 10, `B` 13, `C` 14, counted with room to spare), it is
-    /// within `gamma(k)` of the same expression over the terms'
-    /// magnitudes (Higham, *Accuracy and Stability*, §3.1). The magnitudes
-    /// are themselves rounded (`k` more times), hence `gamma(2k)` of the
-    /// computed ones. Every scaled input lies below 1, so a product that
-    /// underflows loses at most `2^-1075` and later factors do not grow it:
-    /// `ETA` (`2^-500`) per coefficient covers them.
-    ///
-    /// The discriminant and its bound: [`ScaledLine::moment_discriminant`].
+/// `x . y` with two FMAs: at most three roundings on any term's path, as
+/// the plain sum of products has, in fewer instructions.
+#[inline(always)]
+fn dot(x: DVec3, y: DVec3) -> f64 {
+    fma(x.z, y.z, fma(x.y, y.y, x.x * y.x))
+}
+
+/// `x x y` with one FMA per component: two roundings on each term's
+/// path, as `x_j y_k - x_k y_j` has.
+#[inline(always)]
+fn cross(x: DVec3, y: DVec3) -> DVec3 {
+    DVec3::new(
+        fma(x.y, y.z, -(x.z * y.y)),
+        fma(x.z, y.x, -(x.x * y.z)),
+        fma(x.x, y.y, -(x.y * y.x)),
+    )
+}
+
+/// What the coefficients are computed from: `w` within `ew1` of the exact
+/// `o - apex` in the 1-norm, `d`, `a` and `r` exact, every component below
+/// [`LINE_LIMIT`] in magnitude (the scaled line's below 1, an ordinary
+/// ray's by [`Cone::ordinary`]).
+#[derive(Clone, Copy, Debug)]
+struct Line {
+    w: DVec3,
+    ew1: f64,
+    d: DVec3,
+    a: DVec3,
+    r: f64,
+}
+
+/// The largest magnitude of a [`Line`]'s components: every coefficient,
+/// the discriminant and their bounds are polynomials of degree at most 12
+/// in them, so nothing overflows below it, and an operation that
+/// underflows (losing at most `2^-1075`) is grown by the later factors of
+/// its term by less than `2^480`: under `2^-590` each, which `ETA`
+/// (`2^-500`) per quantity covers however many there are.
+const LINE_LIMIT: f64 = pow2(40);
+
+/// The rounded heights the nappe, cap and base tests reuse: `p = w . a`,
+/// `q = d . a` and `s = |a|^2`; along the ray `(x - apex) . a = p + t q`.
+#[derive(Clone, Copy, Debug)]
+struct Heights {
+    p: f64,
+    q: f64,
+    s: f64,
+}
+
+impl Heights {
+    /// Whether the point at `t` lies on the cone's own nappe (`(x - apex)
+    /// . a >= 0`) and, for a capped cone, below the cap (`<= |a|^2`), in
+    /// `f64`: `p + t q` with one rounding, against the rounded `s`.
     #[inline(always)]
-    fn coeffs(&self) -> Option<Coeffs> {
-        let (w, d, a) = (self.wh, self.d, self.a);
-        let (s, rr) = (a.dot(a), self.r * self.r);
-        let (u, v) = (w.cross(a), d.cross(a));
-        let (p, q) = (w.dot(a), d.dot(a));
-        let (um, vm) = (abs_cross(w, a), abs_cross(d, a));
-        let (pm, qm) = (w.abs().dot(a.abs()), d.abs().dot(a.abs()));
-        let (ma, mb, mc) = (
-            s * vm.dot(vm) + rr * qm * qm,
-            s * um.dot(vm) + rr * pm * qm,
-            s * um.dot(um) + rr * pm * pm,
-        );
+    fn on_cone(self, t: f64, capped: bool) -> bool {
+        let h = fma(t, self.q, self.p);
+        h >= 0.0 && (!capped || h <= self.s)
+    }
+}
+
+/// The discriminant of a [`Line`] with its bound, and what the
+/// coefficients share with it: computed first, since where it certifies a
+/// miss of the whole double cone the coefficients are never needed.
+#[derive(Clone, Copy, Debug)]
+struct Discriminant {
+    /// `s = |a|^2` and `r^2`, rounded.
+    s: f64,
+    rr: f64,
+    /// `|w|_1` and `|d|_1`.
+    nw: f64,
+    nd: f64,
+    disc: f64,
+    e_disc: f64,
+}
+
+impl Line {
+    /// The coefficients with their bounds, the discriminant first
+    /// ([`Line::discriminant`], [`Line::coeffs`]).
+    #[inline(always)]
+    fn filtered(&self) -> Option<(Coeffs, Heights)> {
+        self.coeffs(&self.discriminant())
+    }
+
+    /// The lateral quadratic's half-form coefficients `A t^2 + 2 B t + C`
+    /// with error bounds, and the heights; `None` where the terms'
+    /// magnitudes leave the filter's range.
+    ///
+    /// The cone's form is `P(x) = s |x x a|^2 - r^2 (x . a)^2 = x^T M x`
+    /// with `M = s^2 I - (s + r^2) a a^T` (`|x x a|^2 = s |x|^2 - (x .
+    /// a)^2`), so `A = s^2 |d|^2 - (s + r^2) q^2`, `B = s^2 (w . d) - (s +
+    /// r^2) p q` and `C = s^2 |w|^2 - (s + r^2) p^2`.
+    ///
+    /// Bounds. Each coefficient, a polynomial in `w`, `d`, `a` and `r`, is
+    /// computed with at most 13 roundings on any term's path (`s` 3, `s^2`
+    /// 7, times `|d|^2` 11; `s + r^2` 4, times `q` 8 and `q` 12; the
+    /// difference 13), so it is within `gamma(13)` of the same expression
+    /// over the terms' magnitudes (Higham, *Accuracy and Stability*, §3.1):
+    /// for `A` that is `s^2 |d|^2 + (s + r^2) (|d| . |a|)^2`, for `B` it is
+    /// `s^2 (|w| . |d|) + (s + r^2) (|w| . |a|) (|d| . |a|)`, for `C` it is
+    /// `s^2 |w|^2 + (s + r^2) (|w| . |a|)^2`. Those are computed with at
+    /// most 13 roundings, so `gamma(28)` of the computed ones covers them
+    /// (`gamma(13) / (1 - gamma(13)) <= gamma(26)`) and the bound's own two
+    /// roundings. `w`'s error `δ` moves `B` by `s^2 (δ . d) - (s + r^2) (δ
+    /// . a) q`, at most `K |δ| |d|` with `K = s (2 s + r^2)`
+    /// (Cauchy–Schwarz), and `C` by `2 w^T M δ + δ^T M δ`, at most `K |δ|
+    /// (2 |w| + |δ|)` (`|x^T M y| <= K |x| |y|`), taken with `1 +
+    /// gamma(16)` for the roundings of `K` and of the bound; every
+    /// component below [`LINE_LIMIT`], `ETA` per coefficient covers
+    /// underflows.
+    #[inline(always)]
+    fn coeffs(&self, k: &Discriminant) -> Option<(Coeffs, Heights)> {
+        let (w, d, a) = (self.w, self.d, self.a);
+        let (s, rr) = (k.s, k.rr);
+        let (dd, wd, ww) = (dot(d, d), dot(w, d), dot(w, w));
+        let (p, q) = (dot(w, a), dot(d, a));
+        let (ss, sr) = (s * s, s + rr);
+        let (wm, dm, am) = (w.abs(), d.abs(), a.abs());
+        let (pm, qm) = (dot(wm, am), dot(dm, am));
+        let ma = ss * dd + sr * qm * qm;
+        let mb = ss * dot(wm, dm) + sr * pm * qm;
+        let mc = ss * ww + sr * pm * pm;
         if !(in_filter_range(ma) && in_filter_range(mc)) {
             return None;
         }
-        let a_ = s * v.dot(v) - rr * q * q;
-        let b = s * u.dot(v) - rr * p * q;
-        let c = s * u.dot(u) - rr * p * p;
-        let (e_a, e_b, e_c) = (
-            gamma(20) * ma + ETA,
-            gamma(26) * mb + ETA,
-            gamma(28) * mc + ETA,
-        );
-        let (disc, e_disc) = self.moment_discriminant(s, rr);
-        Some(Coeffs {
-            a: a_,
-            e_a,
-            b,
-            e_b,
-            c,
-            e_c,
-            disc,
-            e_disc,
-        })
+        let ew = self.ew1;
+        let moved = s * (2.0 * s + rr) * ew * (1.0 + gamma(16));
+        Some((
+            Coeffs {
+                a: ss * dd - sr * q * q,
+                e_a: gamma(28) * ma + ETA,
+                b: ss * wd - sr * p * q,
+                e_b: gamma(28) * mb + moved * k.nd + ETA,
+                c: ss * ww - sr * p * p,
+                e_c: gamma(28) * mc + moved * (2.0 * k.nw + ew) + ETA,
+                disc: k.disc,
+                e_disc: k.e_disc,
+            },
+            Heights { p, q, s },
+        ))
     }
 
-    /// The discriminant `B^2 - A C` in the form that does not cancel for
-    /// far origins, from the line's moment `n = w x d` about the apex.
+    /// The discriminant `B^2 - A C` of [`Line::coeffs`] in the form that
+    /// does not cancel for far origins, from the line's moment `n = w x d`
+    /// about the apex.
     ///
-    /// The cone's form is `P(x) = s |x x a|^2 - r^2 (x . a)^2 = x^T M x` with
-    /// `M = s^2 I - (s + r^2) a a^T` (`|x x a|^2 = s |x|^2 - (x . a)^2`), so
-    /// `A = s^2 |d|^2 - (s + r^2) q^2`, `B = s^2 (w . d) - (s + r^2) p q`,
-    /// `C = s^2 |w|^2 - (s + r^2) p^2` (`p = w . a`, `q = d . a`), and
-    /// expanding, `B^2 - A C = -s^4 |n|^2 + s^2 (s + r^2) |p d - q w|^2`
-    /// with `p d - q w = -a x n` and `|a x n|^2 = s |n|^2 - (a . n)^2`:
-    /// `B^2 - A C = s^2 (s r^2 |n|^2 - (s + r^2) (a . n)^2)`. A far origin
-    /// makes `B^2` and `A C` huge and nearly equal; `|n|` is `|d|` times the
-    /// line's distance from the apex, of the size of the cone.
+    /// Expanding, `B^2 - A C =
+    /// -s^4 |n|^2 + s^2 (s + r^2) |p d - q w|^2` with `p d - q w = -a x n`
+    /// and `|a x n|^2 = s |n|^2 - (a . n)^2`: `B^2 - A C = s^2 (s r^2
+    /// |n|^2 - (s + r^2) (a . n)^2)`. A far origin makes `B^2` and `A C`
+    /// huge and nearly equal; `|n|` is `|d|` times the line's distance from
+    /// the apex, of the size of the cone.
     ///
-    /// Bounds, first order: `n`'s error vector has 1-norm at most `E =
-    /// |wl|_1 |d|_1 + gamma(3) |w|_1 |d|_1` (`w`'s low part dropped; two
-    /// products and a difference per component); `|n|^2` moves by at most
-    /// `2 |n|_1 E + E^2` and rounds within `gamma(3)`; `a . n` by `|a|_1 E`
-    /// and `gamma(3) |a|_1 |n|_1`, its square by twice that times `|a . n|`
-    /// plus its square and one rounding. The products with `s r^2`
-    /// (within `gamma(5)` of the exact one: `s` three roundings, `r^2` one,
-    /// the product one) and `s + r^2` (`gamma(4)`, all terms positive) add
-    /// `gamma(6)` of each term, the difference `u`, and `s^2` (`gamma(7)`)
-    /// with the last product `gamma(8)` of the result. The bound's own
-    /// roundings take `1 + gamma(8)`; `ETA` per term covers underflows
-    /// (every scaled input lies below 1).
+    /// The bound, with `N = s r^2 I - (s + r^2) a a^T` (eigenvalues `s r^2`
+    /// across `a` and `-s^2` along it, so `|x^T N y| <= s (s + r^2) |x|
+    /// |y|`) and `inner(n) = n^T N n`:
+    ///
+    /// - the computed `n` is off the exact moment by at most `E = ew1
+    ///   |d|_1 + gamma(3) |w|_1 |d|_1` in the 1-norm (`w`'s error, and two
+    ///   roundings per component of the cross product; `2 ETA` for its
+    ///   products that underflow), which moves `inner` by `2 n^T N Δ +
+    ///   Δ^T N Δ`: at most `s (s + r^2) (2 |n|_1 E + E^2)`;
+    /// - from the computed `n`, `a` and `r`, the discriminant takes at most
+    ///   21 roundings on any term's path (`|n|^2` 3, `s r^2` 5, their
+    ///   product 9; `(a . n)^2` 7, `s + r^2` 4, their product 12; the
+    ///   difference 13; `s^2` 7 and the product 21), so it is within
+    ///   `gamma(21)` of `s^2 (s r^2 |n|^2 + (s + r^2) (|a| . |n|)^2) <= s^3
+    ///   (s + 2 r^2) |n|^2` (Higham §3.1; Cauchy–Schwarz);
+    ///
+    /// so `|disc - D| <= s^3 (gamma(21) (s + 2 r^2) |n|^2 + (s + r^2) (2
+    /// |n|_1 E + E^2))`. Its factors are computed within `gamma(4)` of the
+    /// exact ones, and the bound rounds a few times more: `1 + gamma(32)`
+    /// covers both. Every component below [`LINE_LIMIT`], `ETA` covers the
+    /// underflows.
     #[inline(always)]
-    fn moment_discriminant(&self, s: f64, rr: f64) -> (f64, f64) {
-        let (w, d, a) = (self.wh, self.d, self.a);
-        let (nd, na) = (norm1(d), norm1(a));
-        let n = w.cross(d);
-        let e_n = norm1(self.wl) * nd + gamma(3) * norm1(w) * nd + 2.0 * ETA;
-        let nn = norm1(n);
-        let n2 = n.dot(n);
-        let e_n2 = 2.0 * nn * e_n + e_n * e_n + gamma(3) * n2 + ETA;
-        let g = a.dot(n);
-        let e_g = na * e_n + gamma(3) * na * nn + ETA;
-        let g2 = g * g;
-        let e_g2 = 2.0 * g.abs() * e_g + e_g * e_g + U * g2 + ETA;
-        let (srr, sr) = (s * rr, s + rr);
-        let (x1, x2) = (srr * n2, sr * g2);
-        let inner = x1 - x2;
-        let e_inner = (srr * e_n2 + sr * e_g2) * (1.0 + gamma(6))
-            + gamma(6) * (x1 + x2)
-            + U * inner.abs()
-            + ETA;
-        let ss = s * s;
-        let disc = ss * inner;
-        let e_disc =
-            (ss * e_inner * (1.0 + gamma(7)) + gamma(8) * disc.abs()) * (1.0 + gamma(8)) + ETA;
-        (disc, e_disc)
+    fn discriminant(&self) -> Discriminant {
+        let (w, d, a) = (self.w, self.d, self.a);
+        let (s, rr) = (dot(a, a), self.r * self.r);
+        let (nw, nd) = (norm1(w), norm1(d));
+        let n = cross(w, d);
+        let e_n = self.ew1 * nd + gamma(3) * nw * nd + 2.0 * ETA;
+        let (nn, n2, g) = (norm1(n), dot(n, n), dot(a, n));
+        let (ss, sr, srr) = (s * s, s + rr, s * rr);
+        let gm = dot(a.abs(), n.abs());
+        let disc = ss * (srr * n2 - sr * (g * g));
+        let moved = 2.0 * (srr * nn + sr * g.abs() * norm1(a)) * e_n + s * sr * e_n * e_n;
+        let rounded = gamma(21) * (srr * n2 + sr * gm * gm);
+        let e_disc = (rounded + moved) * ss * (1.0 + gamma(32)) + ETA;
+        Discriminant {
+            s,
+            rr,
+            nw,
+            nd,
+            disc,
+            e_disc,
+        }
     }
 }
 
@@ -601,7 +706,7 @@ impl FmaKernel for BoundedLateral<'_> {
 
     #[inline(always)]
     fn run(&self) -> Self::Output {
-        both_bounded(&self.line.coeffs()?)
+        both_bounded(&self.line.line().filtered()?.0)
     }
 }
 
@@ -677,8 +782,31 @@ impl Cone {
     }
 
     /// The first crossing in `range`, bounded, and whether it lies on the
-    /// base disk.
+    /// base disk: in the default tier from the ordinary path where the
+    /// inputs allow ([`Cone::ordinary`]) and it decides, else at the
+    /// cone's own scales.
+    #[inline(always)]
     fn first_bounded(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<(BoundedRoot, bool)> {
+        let tier = match tier {
+            Tier::Default => match with_fma(&OrdinaryFirst {
+                cone: self,
+                ray,
+                range,
+            }) {
+                Ordinary::Found(found) => return found,
+                // Undecided here, so at the scaled line too.
+                Ordinary::Undecided => Tier::Precise,
+                Ordinary::Beyond => Tier::Default,
+            },
+            Tier::Precise => Tier::Precise,
+        };
+        self.scaled_first(ray, range, tier)
+    }
+
+    /// [`Cone::first_bounded`] at the cone's own scales (`rim.rs` and
+    /// [`Cone::scaled`]), for every tier and input.
+    #[inline(never)]
+    fn scaled_first(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<(BoundedRoot, bool)> {
         Some(match self.first_crossing(ray, range, tier)? {
             Crossing::Lateral(root) => (root, false),
             Crossing::Base { t, num } => {
@@ -697,6 +825,36 @@ impl Cone {
         })
     }
 
+    /// The ray and the cone as they are, without scaling, where the largest
+    /// magnitude of each group, `w = o - apex` (rounded), `d`, `a`, and `r`
+    /// itself, lies in `[2^-40, 2^40)`: below [`LINE_LIMIT`] the
+    /// coefficients' bounds hold ([`Line`]); the lower end keeps their
+    /// `ETA` slack far below the values it is added to (the filter would
+    /// decline there) and `r^2` and `|a|^2` normal for the rim and cap
+    /// tests. `w`'s rounding errs by at most `u |w_k|` per component.
+    #[inline(always)]
+    fn ordinary(&self, ray: &Ray) -> Option<Line> {
+        let w = ray.origin() - self.apex;
+        let (d, a, r) = (ray.direction(), self.axis, self.radius);
+        // `maxsd`, `minsd`: the inputs are finite and `w` at most infinite,
+        // so the comparisons need no NaN handling.
+        let max = |x: f64, y: f64| if x > y { x } else { y };
+        let min = |x: f64, y: f64| if x < y { x } else { y };
+        let largest = |v: DVec3| max(max(v.x.abs(), v.y.abs()), v.z.abs());
+        let (mw, md, ma) = (largest(w), largest(d), largest(a));
+        let high = max(max(mw, md), max(ma, r));
+        let low = min(min(mw, md), min(ma, r));
+        // False for an overflowed `w` too.
+        let ordinary = high < LINE_LIMIT && low >= pow2(-40);
+        ordinary.then(|| Line {
+            w,
+            ew1: U * norm1(w),
+            d,
+            a,
+            r,
+        })
+    }
+
     /// The first hit in `range` from `tier`'s lateral roots.
     fn cast_tier(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Hit> {
         let (root, on_base) = self.first_bounded(ray, range, tier)?;
@@ -706,6 +864,127 @@ impl Cone {
             self.normal_at(ray.at(root.t), -ray.direction())
         };
         Some(Hit::at(ray, root.t, root.error, normal))
+    }
+}
+
+/// The default tier's first crossing for a ray at ordinary magnitudes
+/// ([`Cone::ordinary`]), computed with hardware FMA where the CPU has it.
+struct OrdinaryFirst<'a> {
+    cone: &'a Cone,
+    ray: &'a Ray,
+    range: Interval,
+}
+
+/// What the ordinary path found.
+enum Ordinary {
+    /// The first crossing and whether it lies on the base disk, or none.
+    Found(Option<(BoundedRoot, bool)>),
+    /// A root's count or place the bounds cannot decide: the precise tier's.
+    Undecided,
+    /// Inputs beyond the ordinary magnitudes: the scaled line's.
+    Beyond,
+}
+
+impl FmaKernel for OrdinaryFirst<'_> {
+    type Output = Ordinary;
+
+    #[inline(always)]
+    fn run(&self) -> Ordinary {
+        let Some(line) = self.cone.ordinary(self.ray) else {
+            return Ordinary::Beyond;
+        };
+        match self.first(line) {
+            Some(found) => Ordinary::Found(found),
+            None => Ordinary::Undecided,
+        }
+    }
+}
+
+impl OrdinaryFirst<'_> {
+    /// The lateral roots from the stable pair in exact order, the smaller
+    /// first and the larger only where the smaller is not the answer;
+    /// each root's place in `range` certified by its bound, its nappe and
+    /// cap in `f64` ([`Heights::on_cone`]).
+    ///
+    /// The base disk is computed only where it can be the answer. A
+    /// certified miss of the whole double cone misses the disk: the disk
+    /// lies in the closed solid cone `P <= 0`, and a line through a point
+    /// with `P <= 0` meets the surface (with `A > 0` the quadratic grows
+    /// on both sides; with `A < 0` the line runs from one nappe to the
+    /// other, crossing the apex's plane where `P >= 0`). A lateral root on
+    /// the nappe where the ray enters the solid (`P` falling: the smaller
+    /// root for `A > 0`, the larger for `A < 0`, whose sign is certified)
+    /// is the first crossing: the solid is convex, so its line meets it in
+    /// one segment, entered once; any base crossing is its exit, later.
+    #[inline(always)]
+    fn first(&self, line: Line) -> Option<Option<(BoundedRoot, bool)>> {
+        let capped = self.cone.capped;
+        let k = line.discriminant();
+        if certified_negative(k.disc, k.e_disc) {
+            return Some(None);
+        }
+        let (k, heights) = line.coeffs(&k)?;
+        let Some(pair) = stable_pair(&k)? else {
+            return Some(None);
+        };
+        let mut lateral = None;
+        for larger in [false, true] {
+            let root = if larger {
+                pair.larger(&k)
+            } else {
+                pair.smaller(&k)
+            };
+            match root.place(self.range) {
+                Place::Undecided => return None,
+                Place::Above => break,
+                Place::Below => {}
+                Place::Inside => {
+                    if heights.on_cone(root.t, capped) {
+                        lateral = Some((root, (k.a > 0.0) != larger));
+                        break;
+                    }
+                }
+            }
+        }
+        if let Some((root, true)) = lateral {
+            return Some(Some((root, false)));
+        }
+        let base = if capped {
+            self.base(line, heights)
+        } else {
+            None
+        };
+        Some(match (lateral, base) {
+            (Some((root, _)), Some(b)) if b.t < root.t => Some((b, true)),
+            (Some((root, _)), _) => Some((root, false)),
+            (None, b) => b.map(|b| (b, true)),
+        })
+    }
+
+    /// The base disk's crossing `t = (|a|^2 - w . a) / (d . a)` where
+    /// `range` admits it and the point lies within the radius of the
+    /// axis, both in `f64` (`|x - a| <= r` at `x = w + t d`, on the base
+    /// plane), with its bound: the level `s` within `gamma(4)` of `|a|^2`,
+    /// `p` within its dot product's bound (`w` rounded once), the
+    /// numerator rounding once more, and the quotient's error.
+    #[inline(always)]
+    fn base(&self, line: Line, h: Heights) -> Option<BoundedRoot> {
+        let Line { w, d, a, r, .. } = line;
+        let num = h.s - h.p;
+        let t = num / h.q;
+        // False for NaN (`q` zero) and beyond f64's range.
+        if !self.range.admits(t) {
+            return None;
+        }
+        let radial = DVec3::new(fma(t, d.x, w.x), fma(t, d.y, w.y), fma(t, d.z, w.z)) - a;
+        // False for NaN (an overflowed point) too.
+        let within = dot(radial, radial) <= r * r;
+        if !within {
+            return None;
+        }
+        let e_num = dot_error(w, a) + gamma(4) * h.s + U * num.abs() * (1.0 + 2.0 * U);
+        let error = quotient_error(t, e_num, h.q, dot_error(d, a));
+        Some(BoundedRoot { t, error })
     }
 }
 
