@@ -317,34 +317,33 @@ impl Line {
     /// does not cancel for far origins, from the line's moment `n = w x d`
     /// about the apex.
     ///
-    /// Expanding, `B^2 - A C =
-    /// -s^4 |n|^2 + s^2 (s + r^2) |p d - q w|^2` with `p d - q w = -a x n`
-    /// and `|a x n|^2 = s |n|^2 - (a . n)^2`: `B^2 - A C = s^2 (s r^2
-    /// |n|^2 - (s + r^2) (a . n)^2)`. A far origin makes `B^2` and `A C`
-    /// huge and nearly equal; `|n|` is `|d|` times the line's distance from
-    /// the apex, of the size of the cone.
+    /// Expanding, `B^2 - A C = -s^4 |n|^2 + s^2 (s + r^2) |p d - q w|^2`
+    /// with `p d - q w = -a x n` and `|a x n|^2 = s |n|^2 - (a . n)^2`:
+    /// `B^2 - A C = s^2 (s r^2 |n|^2 - (s + r^2) (a . n)^2)`. A far origin
+    /// makes `B^2` and `A C` huge and nearly equal; `|n|` is `|d|` times
+    /// the line's distance from the apex, of the size of the cone.
     ///
-    /// The bound, with `N = s r^2 I - (s + r^2) a a^T` (eigenvalues `s r^2`
-    /// across `a` and `-s^2` along it, so `|x^T N y| <= s (s + r^2) |x|
-    /// |y|`) and `inner(n) = n^T N n`:
+    /// The bound, with `inner(n) = n^T N n`, `N = s r^2 I - (s + r^2) a
+    /// a^T` (eigenvalues `s r^2` across `a` and `-s^2` along it):
     ///
-    /// - the computed `n` is off the exact moment by at most `E = ew1
+    /// - the computed `n` is off the exact moment by `Δ`, at most `E = ew1
     ///   |d|_1 + gamma(3) |w|_1 |d|_1` in the 1-norm (`w`'s error, and two
     ///   roundings per component of the cross product; `2 ETA` for its
     ///   products that underflow), which moves `inner` by `2 n^T N Δ +
-    ///   Δ^T N Δ`: at most `s (s + r^2) (2 |n|_1 E + E^2)`;
+    ///   Δ^T N Δ`: at most `2 (s r^2 |n|_1 + (s + r^2) |a . n| |a|_1) E +
+    ///   s (s + r^2) E^2` (`|x . Δ| <= |x|_1 E`), with `|a . n| <= |a| .
+    ///   |n|`;
     /// - from the computed `n`, `a` and `r`, the discriminant takes at most
     ///   21 roundings on any term's path (`|n|^2` 3, `s r^2` 5, their
     ///   product 9; `(a . n)^2` 7, `s + r^2` 4, their product 12; the
     ///   difference 13; `s^2` 7 and the product 21), so it is within
-    ///   `gamma(21)` of `s^2 (s r^2 |n|^2 + (s + r^2) (|a| . |n|)^2) <= s^3
-    ///   (s + 2 r^2) |n|^2` (Higham §3.1; Cauchy–Schwarz);
+    ///   `gamma(21)` of `s^2 (s r^2 |n|^2 + (s + r^2) (|a| . |n|)^2)`
+    ///   (Higham §3.1).
     ///
-    /// so `|disc - D| <= s^3 (gamma(21) (s + 2 r^2) |n|^2 + (s + r^2) (2
-    /// |n|_1 E + E^2))`. Its factors are computed within `gamma(4)` of the
-    /// exact ones, and the bound rounds a few times more: `1 + gamma(32)`
-    /// covers both. Every component below [`LINE_LIMIT`], `ETA` covers the
-    /// underflows.
+    /// Every factor is a sum or product of nonnegative computed values,
+    /// at most 30 roundings below the exact one on any path, bound's own
+    /// operations included: `1 + gamma(32)` covers them. Every component
+    /// below [`LINE_LIMIT`], `ETA` covers the underflows.
     #[inline(always)]
     fn discriminant(&self) -> Discriminant {
         let (w, d, a) = (self.w, self.d, self.a);
@@ -356,7 +355,7 @@ impl Line {
         let (ss, sr, srr) = (s * s, s + rr, s * rr);
         let gm = dot(a.abs(), n.abs());
         let disc = ss * (srr * n2 - sr * (g * g));
-        let moved = 2.0 * (srr * nn + sr * g.abs() * norm1(a)) * e_n + s * sr * e_n * e_n;
+        let moved = 2.0 * (srr * nn + sr * gm * norm1(a)) * e_n + s * sr * e_n * e_n;
         let rounded = gamma(21) * (srr * n2 + sr * gm * gm);
         let e_disc = (rounded + moved) * ss * (1.0 + gamma(32)) + ETA;
         Discriminant {
@@ -992,8 +991,12 @@ impl RayCast for Cone {
     /// The first hit in `range` on the cone's own nappe (`(x - apex) . axis
     /// >= 0`), below the cap for a capped cone, or on the base disk (normal
     /// `+axis`). The lateral roots come from the default tier (exact count,
-    /// the stable formula's root with its a-priori bound); nappe, cap and
-    /// rim membership are decided in `f64`.
+    /// the stable formula's root with its a-priori bound, its place in
+    /// `range` certified); nappe, cap and rim membership, and the base
+    /// plane's parameter against `range`, are decided in `f64`, so a
+    /// crossing within a few ulps of the apex, the rim or an end of `range`
+    /// may go either way. The base disk's `t` comes with its own certified
+    /// bound ([`Hit::t_error`]).
     #[inline]
     fn cast(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         self.cast_tier(ray, range, Tier::Default)
@@ -1051,6 +1054,58 @@ mod tests {
         let diff = p.sub(&Dyadic::from_f64(value));
         let e = Dyadic::from_f64(e);
         diff.sub(&e).sign() <= 0 && diff.add(&e).sign() >= 0
+    }
+
+    /// Whether `|exact - value| <= e`, decided exactly.
+    fn within(exact: &Dyadic, value: f64, e: f64) -> bool {
+        let diff = exact.sub(&Dyadic::from_f64(value));
+        let e = Dyadic::from_f64(e);
+        diff.sub(&e).sign() <= 0 && diff.add(&e).sign() >= 0
+    }
+
+    /// The coefficients' and the discriminant's bounds hold against the
+    /// exact ones (`Quadratic::cone`'s `a t^2 + b t + c` is `A t^2 + 2 B t +
+    /// C`), on ordinary lines (`w` rounded once) and scaled ones (`w` as
+    /// its high part): the report's rays, grazing ones (the exact
+    /// discriminant near zero), rays along the axis and across it, and
+    /// components far below the largest (products that underflow).
+    #[test]
+    fn coefficient_bounds_hold() {
+        let mut rng = SplitMix64::new(9);
+        for case in 0..3000 {
+            let c = cone_ray_case(ConeRayClass::ALL[case % 2], &mut rng);
+            let (mut o, mut d) = (DVec3::from(c.origin), DVec3::from(c.direction));
+            let (apex, a, r) = (c.apex(), c.axis(), c.radius);
+            match case % 6 {
+                // Along the axis, and across it through the apex.
+                1 => d = a * (1.0 + rng.next_f64()),
+                2 => o = apex + a.any_orthogonal_vector() * 3.0,
+                // Through a point of the rim: tangent or nearly so.
+                3 => d = apex + a + a.any_orthogonal_vector().normalize() * r - o,
+                4 => d.y = 1e-300,
+                _ => {}
+            }
+            let cone = Cone::new(apex, a, r).unwrap();
+            let ray = Ray::new(o, d).unwrap();
+            let exact = Quadratic::cone(o.into(), d.into(), apex.into(), a.into(), r);
+            let scaled = cone.scaled(&ray).unwrap();
+            let (_, from_scaled) = scaled_case(o, d, apex, a, r);
+            let lines = [
+                (cone.ordinary(&ray), &exact),
+                (Some(scaled.line()), &from_scaled),
+            ];
+            for (line, q) in lines {
+                let Some((k, _)) = line.and_then(|l| l.filtered()) else {
+                    continue;
+                };
+                let half_b = q.b.half();
+                let disc = half_b.mul(&half_b).sub(&q.a.mul(&q.c));
+                assert!(within(&q.a, k.a, k.e_a), "A {case}: {k:?}");
+                assert!(within(&half_b, k.b, k.e_b), "B {case}: {k:?}");
+                assert!(within(&q.c, k.c, k.e_c), "C {case}: {k:?}");
+                assert!(within(&disc, k.disc, k.e_disc), "D {case}: {k:?}");
+            }
+        }
     }
 
     /// Both evaluations' bounds hold at the exact roots' roundings and a
