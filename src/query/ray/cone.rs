@@ -781,23 +781,22 @@ impl Cone {
     }
 
     /// The first crossing in `range`, bounded, and whether it lies on the
-    /// base disk: in the default tier from the ordinary path where the
-    /// inputs allow ([`Cone::ordinary`]) and it decides, else at the
-    /// cone's own scales.
+    /// base disk: from the ordinary path where the inputs allow
+    /// ([`Cone::ordinary`]) and it decides (in the precise tier only a
+    /// certified miss), else at the cone's own scales.
     #[inline(always)]
     fn first_bounded(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<(BoundedRoot, bool)> {
-        let tier = match tier {
-            Tier::Default => match with_fma(&OrdinaryFirst {
-                cone: self,
-                ray,
-                range,
-            }) {
-                Ordinary::Found(found) => return found,
-                // Undecided here, so at the scaled line too.
-                Ordinary::Undecided => Tier::Precise,
-                Ordinary::Beyond => Tier::Default,
-            },
-            Tier::Precise => Tier::Precise,
+        let ordinary = OrdinaryFirst {
+            cone: self,
+            ray,
+            range,
+            tier,
+        };
+        let tier = match (tier, with_fma(&ordinary)) {
+            (_, Ordinary::Found(found)) => return found,
+            // Undecided here, so at the scaled line too.
+            (_, Ordinary::Undecided) => Tier::Precise,
+            (tier, Ordinary::Beyond) => tier,
         };
         self.scaled_first(ray, range, tier)
     }
@@ -872,6 +871,9 @@ struct OrdinaryFirst<'a> {
     cone: &'a Cone,
     ray: &'a Ray,
     range: Interval,
+    /// In the precise tier, only a certified miss of the whole double
+    /// cone is an answer: the line's roots carry this tier's bounds.
+    tier: Tier,
 }
 
 /// What the ordinary path found.
@@ -921,6 +923,9 @@ impl OrdinaryFirst<'_> {
         let k = line.discriminant();
         if certified_negative(k.disc, k.e_disc) {
             return Some(None);
+        }
+        if self.tier == Tier::Precise {
+            return None;
         }
         let (k, heights) = line.coeffs(&k)?;
         let Some(pair) = stable_pair(&k)? else {
