@@ -385,89 +385,84 @@ struct Lateral {
     sr: Near,
 }
 
-/// A double-double `hi + lo` within `err` of the exact value it stands for.
+/// An unevaluated double-double `hi + lo`.
 #[derive(Clone, Copy, Debug)]
-struct Near {
+struct Pair {
     hi: f64,
     lo: f64,
-    err: f64,
 }
 
-impl Near {
-    /// `|hi| + |lo|`: at least the pair's own magnitude.
+impl Pair {
+    /// The square: `hi^2` exactly as a pair (TwoProduct; Higham, *Accuracy
+    /// and Stability*, 2nd ed., §4.3), its low part with `2 hi lo` in one
+    /// FMA; `lo^2` dropped. Not normalized.
+    #[inline(always)]
+    fn square(self) -> Pair {
+        let (q, ql) = two_prod(self.hi, self.hi);
+        Pair {
+            hi: q,
+            lo: fma(2.0 * self.hi, self.lo, ql),
+        }
+    }
+
+    /// The product: `hi hi'` exactly as a pair, the cross terms added to
+    /// its low part by two FMAs; `lo lo'` dropped. Not normalized.
+    #[inline(always)]
+    fn times(self, x: Pair) -> Pair {
+        let (p, pl) = two_prod(self.hi, x.hi);
+        Pair {
+            hi: p,
+            lo: fma(self.hi, x.lo, fma(self.lo, x.hi, pl)),
+        }
+    }
+
+    /// The sum of three: the high parts exactly (TwoSum), the five
+    /// low-order terms in a tree of depth three.
+    #[inline(always)]
+    fn sum3([x, y, z]: [Pair; 3]) -> Pair {
+        let (s1, g1) = two_sum(x.hi, y.hi);
+        let (hi, g2) = two_sum(s1, z.hi);
+        Pair {
+            hi,
+            lo: (x.lo + y.lo) + (z.lo + (g1 + g2)),
+        }
+    }
+
+    /// `self - x` rounded to one `f64`: the high parts exactly (TwoSum),
+    /// the low-order terms with two roundings, the result once more.
+    #[inline(always)]
+    fn minus(self, x: Pair) -> f64 {
+        let (f, fe) = two_sum(self.hi, -x.hi);
+        f + ((self.lo - x.lo) + fe)
+    }
+
+    /// `|hi| + |lo|`.
     #[inline(always)]
     fn magnitude(self) -> f64 {
         self.hi.abs() + self.lo.abs()
     }
+}
 
-    /// The square of the value `self` stands for: `hi^2` exactly as a
-    /// pair (TwoProduct; Higham, *Accuracy and Stability*, 2nd ed., §4.3),
-    /// its low part with `2 hi lo` in one FMA (one rounding, `u |lo'|`),
-    /// `lo^2` dropped, and the error `δ` carried through `(v + δ)^2 - v^2 =
-    /// δ (2 v + δ)`. The sum `q + lo'` is not normalized: its parts are the
-    /// exact `hi^2` and the low-order rest. Exact unless a product
-    /// underflows (the caller's slack).
+/// A double-double within `err` of the exact value it stands for: the
+/// per-line constants `s^2` and `s + r^2` of [`Lateral::eval_precise`].
+#[derive(Clone, Copy, Debug)]
+struct Near {
+    value: Pair,
+    err: f64,
+}
+
+impl Near {
+    /// The square ([`Pair::square`]) with its bound: the low part's one
+    /// rounding (`u` of it), the dropped `lo^2`, and the error `δ` carried
+    /// through `(v + δ)^2 - v^2 = δ (2 v + δ)`.
     #[inline(always)]
     fn square(self) -> Near {
-        let (q, ql) = two_prod(self.hi, self.hi);
-        let lo = fma(2.0 * self.hi, self.lo, ql);
+        let (v, e) = (self.value, self.err);
+        let sq = v.square();
         Near {
-            hi: q,
-            lo,
-            err: U * lo.abs() + self.lo * self.lo + self.err * (2.0 * self.magnitude() + self.err),
+            value: sq,
+            err: U * sq.lo.abs() + v.lo * v.lo + e * (2.0 * v.magnitude() + e),
         }
-    }
-
-    /// The product of the values `self` and `x` stand for: `hi hi'` as an
-    /// exact pair, the cross terms `hi lo'` and `lo hi'` added to its low
-    /// part by two FMAs (every term of the low part through at most two
-    /// roundings: `gamma(2)` of their magnitudes), `lo lo'` dropped, and
-    /// the errors carried through `(v + δ)(x + ε) - v x = δ (x + ε) + v ε`
-    /// with `|v| <= |hi| + |lo|` and `|x + ε| <= |hi'| + |lo'| + err'`.
-    #[inline(always)]
-    fn times(self, x: Near) -> Near {
-        let (p, pl) = two_prod(self.hi, x.hi);
-        let (cross1, cross2) = (self.hi * x.lo, self.lo * x.hi);
-        let lo = fma(self.hi, x.lo, fma(self.lo, x.hi, pl));
-        Near {
-            hi: p,
-            lo,
-            err: gamma(2) * (pl.abs() + cross1.abs() + cross2.abs())
-                + (self.lo * x.lo).abs()
-                + self.err * (x.magnitude() + x.err)
-                + self.magnitude() * x.err,
-        }
-    }
-
-    /// The sum of three values, their high parts summed exactly (TwoSum)
-    /// and the five low-order terms (three low parts, two TwoSum errors)
-    /// in a tree of depth three: within `gamma(3)` of their magnitudes
-    /// (Higham §4.2) besides the three errors.
-    #[inline(always)]
-    fn sum3([x, y, z]: [Near; 3]) -> Near {
-        let (s1, g1) = two_sum(x.hi, y.hi);
-        let (hi, g2) = two_sum(s1, z.hi);
-        let lo = (x.lo + y.lo) + (z.lo + (g1 + g2));
-        let terms = x.lo.abs() + y.lo.abs() + z.lo.abs() + g1.abs() + g2.abs();
-        Near {
-            hi,
-            lo,
-            err: gamma(3) * terms + x.err + y.err + z.err,
-        }
-    }
-
-    /// The difference `self - x` rounded to one `f64`, and a bound on its
-    /// distance from the difference of the exact values: the high parts
-    /// exactly (TwoSum), the three low-order terms with two roundings
-    /// (`gamma(2)`), the result once more (`u` of it).
-    #[inline(always)]
-    fn minus(self, x: Near) -> (f64, f64) {
-        let (f, fe) = two_sum(self.hi, -x.hi);
-        let tail = (self.lo - x.lo) + fe;
-        let value = f + tail;
-        let e =
-            gamma(2) * (self.lo.abs() + x.lo.abs() + fe.abs()) + U * value.abs() + self.err + x.err;
-        (value, e)
     }
 }
 
@@ -479,15 +474,16 @@ impl Lateral {
     fn of(line: &ScaledLine) -> Lateral {
         let (sh, sl, e_s) = scaled_square(1.0, line.a);
         let s = Near {
-            hi: sh,
-            lo: sl,
+            value: Pair { hi: sh, lo: sl },
             err: e_s,
         };
         let (rh, rl) = two_prod(line.r, line.r);
         let (v, vl) = two_sum(sh, rh);
         let sr = Near {
-            hi: v,
-            lo: vl + (sl + rl),
+            value: Pair {
+                hi: v,
+                lo: vl + (sl + rl),
+            },
             // The low part's two roundings, and the inputs' errors: `r^2`
             // is off by at most `2^-1074` where it underflows.
             err: gamma(2) * (vl.abs() + sl.abs() + rl.abs()) + e_s + ETA,
@@ -505,29 +501,26 @@ impl Lateral {
     }
 
     /// `x = w + tau d` per component as a double-double `xh + xl` (`|xl|
-    /// <= u |xh|`) with a bound on its distance from the exact point: `tau
+    /// <= u |xh|`) and a bound on its distance from the exact point: `tau
     /// d_i` and its sum with `wh_i` exactly (TwoProduct, TwoSum), the two
     /// low-order terms and `wl_i` summed with two roundings, each within
     /// `u` of its result, and the pair renormalized exactly (TwoSum: for a
     /// far origin the low-order terms, of the size of `u |w|`, dwarf `u
-    /// |x|`, and their squares would not be negligible). A TwoProduct error
-    /// that underflows is off by at most `2^-1075` (`ETA`).
+    /// |x|`). A TwoProduct error that underflows is off by at most
+    /// `2^-1075` (`ETA`).
     #[inline(always)]
-    fn point(&self, t: f64) -> [Near; 3] {
+    fn point(&self, t: f64) -> ([Pair; 3], DVec3) {
         let component = |i: usize| {
             let (ph, pl) = two_prod(t, self.d[i]);
             let (sh, sl) = two_sum(self.wh[i], ph);
             let tail = sl + pl;
             let lo = tail + self.wl[i];
-            let (hi, lo2) = two_sum(sh, lo);
-            Near {
-                hi,
-                lo: lo2,
-                err: U * (tail.abs() + lo.abs()) + ETA,
-            }
+            let (hi, lo) = two_sum(sh, lo);
+            (Pair { hi, lo }, U * (tail.abs() + lo.abs()) + ETA)
         };
         // Not `array::from_fn`, whose closure may escape the FMA kernel.
-        [component(0), component(1), component(2)]
+        let (x, y, z) = (component(0), component(1), component(2));
+        ([x.0, y.0, z.0], DVec3::new(x.1, y.1, z.1))
     }
 }
 
@@ -588,35 +581,72 @@ impl Polynomial for Lateral {
     }
 
     /// `P(x) = s^2 |x|^2 - (s + r^2) h^2` in double-double at `x = w + tau
-    /// d` ([`Lateral::point`]), `h = x . a`, with a rigorous bound: every
-    /// step a [`Near`] operation, whose bound covers its own roundings,
-    /// the terms it drops and its inputs' errors. `h`: the three products
-    /// `xh_i a_i` exactly (TwoProduct, `a` exact), their sum exactly
-    /// ([`Near::sum3`]), and the low parts `xl_i a_i` (one FMA each with
-    /// the product's error: within `u` of the magnitudes, `gamma(3)` with
-    /// the sum's tree), the point's errors through `|a_i|`. The bound's own
+    /// d` ([`Lateral::point`]), `h = x . a`, with a rigorous bound.
+    ///
+    /// With `y = xh + xl` (`|xl_i| <= u |xh_i|`), `Q = sum_i fl(xh_i^2)`,
+    /// `F = sum_i |fl(xh_i a_i)|` and the constants `S = s^2` and `R = s +
+    /// r^2` as pairs within `e_S` and `e_R` (to first order throughout, the
+    /// `1 + O(u)` factors kept in the constants' rounding up):
+    ///
+    /// - `|y|^2`: each `xh_i^2` exact as a pair, its low part `2 xh_i xl_i +
+    ///   ql_i` below `3 u q_i` rounded once, `xl_i^2 <= u^2 q_i` dropped, the
+    ///   pairs summed ([`Pair::sum3`]: TwoSum errors below `u Q`, five
+    ///   low terms below `5 u Q` through three roundings): within `20 u^2
+    ///   Q`, its low part below `5.1 u Q`;
+    /// - `h = y . a`: each `xh_i a_i` exact as a pair, its low part below
+    ///   `2 u |f_i|` rounded once, the sum's low terms below `4 u F`
+    ///   through three roundings: within `15 u^2 F`, its low part below
+    ///   `4.1 u F`; `h^2`: the low part below `9.4 u F^2` rounded once,
+    ///   `Hl^2 <= 17 u^2 F^2` dropped, `h`'s error through `2 |h| δ + δ^2`:
+    ///   within `57 u^2 F^2`;
+    /// - the products with `S` and `R` ([`Pair::times`]): the low terms'
+    ///   two roundings, the dropped `lo lo'`, and the errors through `(v +
+    ///   δ)(x + ε) - v x`; the difference's two roundings of its low terms:
+    ///   in all within `128 u^2 (S Q + R F^2) + 16 u (|S.lo| Q + |R.lo|
+    ///   F^2) + 1.04 (e_S Q + e_R F^2)` (`S` and `R` as `|hi| + |lo|`),
+    ///   and the result's rounding `u |P|`.
+    ///
+    /// The point's error `ε` (`|ε_i| <= ex_i`) moves the quadratic form `P =
+    /// y^T M y`, `M = s^2 I - (s + r^2) a a^T`, by `2 y^T M ε + ε^T M ε`,
+    /// at most `2 (S sum |xh_i| ex_i + R F sum |a_i| ex_i) (1 + 4 u)` plus
+    /// `s (s + r^2) |ex|_1^2` (`M`'s eigenvalues `s^2` and `-s r^2`; `s (s +
+    /// r^2)` from the rounded `s` and `r^2` with `1 + gamma(8)`). The bound's own
     /// roundings (sums and products of nonnegative values, at most 12 on a
-    /// path) take `1 + gamma(12)`; below [`POINT_LIMIT`], underflows lose
-    /// less than `2^-760` (`4 ETA`).
+    /// path) take `1 + gamma(12)`. Below [`POINT_LIMIT`], every factor
+    /// later than a product that underflows is below 10: `4 ETA` covers
+    /// those.
     #[inline(always)]
     fn eval_precise(&self, t: f64) -> (f64, f64) {
-        let x = self.point(t);
+        let (x, ex) = self.point(t);
         if !(x.iter().all(|c| c.hi.abs() < POINT_LIMIT)) {
             return (0.0, f64::INFINITY);
         }
-        let xx = Near::sum3([x[0].square(), x[1].square(), x[2].square()]);
+        let (ss, sr) = (self.ss, self.sr);
+        let xx = Pair::sum3([x[0].square(), x[1].square(), x[2].square()]);
         let times_a = |i: usize| {
             let (p, pl) = two_prod(x[i].hi, self.a[i]);
-            let (lo, am) = (fma(x[i].lo, self.a[i], pl), self.a[i].abs());
-            Near {
+            Pair {
                 hi: p,
-                lo,
-                err: U * (pl.abs() + (x[i].lo * am).abs()) + x[i].err * am,
+                lo: fma(x[i].lo, self.a[i], pl),
             }
         };
-        let h = Near::sum3([times_a(0), times_a(1), times_a(2)]);
-        let (value, e) = self.ss.times(xx).minus(self.sr.times(h.square()));
-        (value, e * (1.0 + gamma(12)) + 4.0 * ETA)
+        let f = [times_a(0), times_a(1), times_a(2)];
+        let h = Pair::sum3(f);
+        let value = ss.value.times(xx).minus(sr.value.times(h.square()));
+        let q = x[0].hi * x[0].hi + x[1].hi * x[1].hi + x[2].hi * x[2].hi;
+        let fm = f[0].hi.abs() + f[1].hi.abs() + f[2].hi.abs();
+        let (sm, rm) = (ss.value.magnitude(), sr.value.magnitude());
+        let (qf, ff) = (q, fm * fm);
+        let rounding = 128.0 * U * U * (sm * qf + rm * ff)
+            + 16.0 * U * (ss.value.lo.abs() * qf + sr.value.lo.abs() * ff)
+            + 1.04 * (ss.err * qf + sr.err * ff)
+            + U * value.abs();
+        let xm = DVec3::new(x[0].hi.abs(), x[1].hi.abs(), x[2].hi.abs());
+        let along = (sm + ss.err) * xm.dot(ex) + (rm + sr.err) * fm * self.a.abs().dot(ex);
+        let e1 = ex.x + ex.y + ex.z;
+        let moved = 2.0 * along * (1.0 + 4.0 * U)
+            + self.s * (self.s + self.rr) * e1 * e1 * (1.0 + gamma(8));
+        (value, (rounding + moved) * (1.0 + gamma(12)) + 4.0 * ETA)
     }
 }
 
@@ -1161,9 +1191,9 @@ mod tests {
             }
             if thin == 1.0 && (so, sd, sa) == (0, 0, 0) {
                 for &root in &answer.roots {
-                    let x = lateral.point(root);
+                    let (x, _) = lateral.point(root);
                     let xx: f64 = x.iter().map(|c| c.hi * c.hi).sum();
-                    let scale = lateral.ss.hi * xx;
+                    let scale = lateral.ss.value.hi * xx;
                     roots += 1;
                     // `O(u^2)` of the terms, times `|w| / |x|` (up to `2^27`
                     // for far origins) from the point's own error.
