@@ -15,7 +15,9 @@ use exactray::testing::{
     ConeRayClass, CylinderRayClass, QuadricRayClass, SphereRayClass, SplitMix64, cone_ray_case,
     cylinder_ray_case, quadric_ray_case, sphere_ray_case,
 };
-use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
+use exactray_oracle::line_oracle::{
+    Dyadic, LineAnswer, Quadratic, cross3, dot3, sub3, ulps_between, v3,
+};
 use proptest::prelude::*;
 
 /// The tolerance the issue sets against the correctly rounded root.
@@ -333,6 +335,201 @@ proptest! {
         let at = |v: [f64; 3], k: i32| v.map(|x| x * 2f64.powi(k));
         cone_case(at(o, s), at(d, sd), at(p, s), at(a, sa), f64::from(r) * 2f64.powi(sa))?;
     }
+
+    /// Capped cones (the lateral surface below the cap and the base disk),
+    /// ordinary: the default tier's first crossing against the exact one.
+    #[test]
+    fn capped_cone_ordinary(o in vec3(3.0), d in vec3(2.0), p in vec3(1.0), a in vec3(2.0), r in 0.1..2.0) {
+        capped_cone_case(o, d, p, a, r)?;
+    }
+
+    /// The same with each group (the points, the direction, the axis and
+    /// radius) at its own power of two from `2^-600` to `2^600`: the casts
+    /// at the cone's own scales.
+    #[test]
+    fn capped_cone_scaled(
+        o in vec3(3.0), d in vec3(2.0), p in vec3(1.0), a in vec3(2.0), r in 0.1..2.0,
+        (s, sd, sa) in (-600..600i32, -600..600i32, -600..600i32),
+    ) {
+        let at = |v: [f64; 3], k: i32| v.map(|x| x * 2f64.powi(k));
+        capped_cone_case(at(o, s), at(d, sd), at(p, s), at(a, sa), r * 2f64.powi(sa))?;
+    }
+}
+
+/// A capped cone's first crossing `t >= 0` against the exact one: the
+/// lateral roots correctly rounded (`Quadratic::cone`), their nappe and
+/// cap decided at the rounded root, the base plane's parameter exact and
+/// its rim decided at its rounding, as the report's oracle does (those
+/// decisions are `f64` in the cast too, so a case where one lies within
+/// `1e-9` of its threshold is skipped, as is one whose crossings lie
+/// within a few ulps of 0). Both tiers the same hit or miss
+/// and on the same surface; the default tier's exact crossing inside its
+/// bound (a lateral root by the line oracle, the base by exact signs),
+/// the precise tier's lateral root within [`ULPS`].
+fn capped_cone_case(
+    o: [f64; 3],
+    d: [f64; 3],
+    p: [f64; 3],
+    a: [f64; 3],
+    r: f64,
+) -> Result<(), TestCaseError> {
+    prop_assume!(d != [0.0; 3] && a != [0.0; 3]);
+    let cone = Cone::new(p, a, r).unwrap();
+    let ray = Ray::new(o, d).unwrap();
+    let exact = Quadratic::cone(o, d, p, a, r);
+    let want = exact.answer();
+    prop_assume!(want.count.is_some());
+    let what = format!("capped cone {o:?} {d:?} {p:?} {a:?} {r}");
+    let (ov, dv, pv, av) = (v3(o), v3(d), v3(p), v3(a));
+    let w = sub3(&ov, &pv);
+    let s = dot3(&av, &av);
+    let abs = |x: Dyadic| if x.sign() < 0 { x.neg() } else { x };
+    let scaled = |x: &Dyadic, k: f64| x.mul(&Dyadic::from_f64(k));
+    // The cast's `f64` decisions err by a few units of roundoff of the
+    // magnitudes they are computed from: the heights of `w` and of `t d`
+    // along `a` (and `|a|^2`), the point's distance from the apex for the
+    // rim. Cases within `1e-9` of those of a threshold are skipped.
+    let (wn, dn) = (
+        (0..3)
+            .map(|k| abs(w[k].clone()))
+            .fold(Dyadic::int(0), |x, y| x.add(&y)),
+        (0..3)
+            .map(|k| abs(dv[k].clone()))
+            .fold(Dyadic::int(0), |x, y| x.add(&y)),
+    );
+    let an = (0..3)
+        .map(|k| abs(av[k].clone()))
+        .fold(Dyadic::int(0), |x, y| x.add(&y));
+    // A crossing within a few ulps of the range's end 0 may go either way
+    // (`Precise`'s docs); so may a base crossing, whose place is `f64`'s.
+    let near_zero = |t: f64| ulps_between(t, 0.0) <= 2 * ULPS;
+    let mut lateral = None;
+    for (i, &t) in want.roots.iter().enumerate() {
+        prop_assume!(t.is_finite() && !near_zero(t));
+        let t_d = Dyadic::from_f64(t);
+        let x: [Dyadic; 3] = core::array::from_fn(|k| w[k].add(&dv[k].mul(&t_d)));
+        let h = dot3(&x, &av);
+        let reach = wn.add(&abs(t_d.clone()).mul(&dn)).mul(&an);
+        let apart = |edge: &Dyadic| {
+            let (x, margin) = (h.sub(edge), scaled(&reach.add(edge), 1e-9));
+            x.sub(&margin).sign() * x.add(&margin).sign() > 0
+        };
+        prop_assume!(apart(&Dyadic::int(0)) && apart(&s));
+        if t >= 0.0 && h.sign() > 0 && h.sub(&s).sign() < 0 {
+            lateral = Some((i, t));
+            break;
+        }
+    }
+    // The base plane's parameter `num / den`, exactly, and its rim: the
+    // point's distance from the axis, `|X x a| / (|den| |a|)` with `X =
+    // den (w - a) + num d`, against `r`.
+    let num = s.sub(&dot3(&w, &av));
+    let den = dot3(&dv, &av);
+    let mut base = None;
+    if den.sign() != 0 {
+        // For the messages: the decisions are exact.
+        let [o, d, p, a] = [o, d, p, a].map(glam::DVec3::from);
+        let t = (a.dot(a) - (o - p).dot(a)) / d.dot(a);
+        // `|num / den|` against `x`.
+        let above = |x: f64| {
+            abs(num.clone())
+                .sub(&Dyadic::from_f64(x).mul(&abs(den.clone())))
+                .sign()
+        };
+        prop_assume!(above(f64::from_bits(2 * ULPS)) > 0);
+        // Beyond f64's range no crossing is a hit (the module's policy);
+        // near `f64::MAX` it may go either way.
+        let finite = above(f64::MAX / 4.0) < 0;
+        prop_assume!(finite || above(f64::MAX) > 0);
+        let x: [Dyadic; 3] =
+            core::array::from_fn(|k| den.mul(&w[k].sub(&av[k])).add(&num.mul(&dv[k])));
+        let c = cross3(&x, &av);
+        let radial = dot3(&c, &c);
+        // In units of `|den|`: the distance `|X x a| / |a|` against `r
+        // |den|`, the margin `1e-9 (|w| |den| + |num| |d| + r |den|)`.
+        let rd = Dyadic::from_f64(r).mul(&abs(den.clone()));
+        let margin = scaled(
+            &wn.mul(&abs(den.clone()))
+                .add(&abs(num.clone()).mul(&dn))
+                .add(&rd),
+            1e-9,
+        );
+        let squared = |x: Dyadic| {
+            let x = if x.sign() < 0 { Dyadic::int(0) } else { x };
+            x.mul(&x).mul(&s)
+        };
+        let (lo, hi) = (squared(rd.sub(&margin)), squared(rd.add(&margin)));
+        prop_assume!(radial.sub(&lo).sign() * radial.sub(&hi).sign() > 0);
+        let rr = |r: f64| {
+            let r = Dyadic::from_f64(r);
+            r.mul(&r).mul(&s).mul(&den).mul(&den)
+        };
+        let ahead = finite && num.sign() * den.sign() >= 0;
+        if ahead && radial.sub(&rr(r)).sign() <= 0 {
+            base = Some(t);
+        }
+    }
+    // Which comes first, the base's exact parameter or the lateral root.
+    let base_first = |tl: f64| {
+        let tl = Dyadic::from_f64(tl);
+        num.sub(&tl.mul(&den)).sign() * den.sign() < 0
+    };
+    let first = match (lateral, base) {
+        (Some((_, tl)), Some(tb)) if base_first(tl) => Some((None, tb)),
+        (Some((i, tl)), _) => Some((Some(i), tl)),
+        (None, b) => b.map(|tb| (None, tb)),
+    };
+    let bounded = cone.cast_bounded(&ray, Interval::FORWARD);
+    let precise = Precise(cone).cast_bounded(&ray, Interval::FORWARD);
+    match (first, bounded, precise) {
+        (None, None, None) => {}
+        (Some((index, t)), Some(b), Some(pr)) => {
+            let within = |b: exactray::roots::BoundedRoot| match index {
+                Some(i) => exact.root_within(i, b.t, b.error),
+                None => {
+                    let side = |x: f64| {
+                        let x = Dyadic::from_f64(x);
+                        num.sub(&x.mul(&den)).sign() * den.sign()
+                    };
+                    side(b.t - b.error) >= 0 && side(b.t + b.error) <= 0
+                }
+            };
+            prop_assert!(
+                within(b),
+                "{}: cast_bounded {:?}, first crossing {} ({:?})",
+                what,
+                b,
+                t,
+                index
+            );
+            prop_assert!(
+                within(pr),
+                "{}: precise {:?}, first crossing {} ({:?})",
+                what,
+                pr,
+                t,
+                index
+            );
+            if index.is_some() {
+                prop_assert!(
+                    ulps_between(pr.t, t) <= ULPS,
+                    "{}: precise {:?} vs {}",
+                    what,
+                    pr,
+                    t
+                );
+            }
+        }
+        _ => prop_assert!(
+            false,
+            "{}: cast_bounded {:?}, precise {:?}, want {:?}",
+            what,
+            bounded,
+            precise,
+            first
+        ),
+    }
+    Ok(())
 }
 
 fn int3() -> impl Strategy<Value = [f64; 3]> {
@@ -422,6 +619,13 @@ fn seeded_hard_rays() {
             let c = cone_ray_case(class, &mut rng);
             let (apex, axis) = (c.apex().to_array(), c.axis().to_array());
             must_pass(cone_case(c.origin, c.direction, apex, axis, c.radius));
+            must_pass(capped_cone_case(
+                c.origin,
+                c.direction,
+                apex,
+                axis,
+                c.radius,
+            ));
         }
     }
 }

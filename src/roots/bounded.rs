@@ -118,6 +118,17 @@ impl BoundedRoot {
     }
 }
 
+/// Whether the running bound `e_disc` certifies that the discriminant
+/// `disc` is negative, so that the quadratic has no real root (a zero
+/// leading coefficient would make it `B^2 >= 0`); the margin is
+/// [`stable_pair`]'s. A NaN or infinite bound (overflow) certifies
+/// nothing. What a cast can check before it computes the coefficients.
+#[inline(always)]
+pub(crate) fn certified_negative(disc: f64, e_disc: f64) -> bool {
+    let e_disc = e_disc * (1.0 + 64.0 * U);
+    disc < -e_disc && e_disc < f64::INFINITY
+}
+
 /// Two distinct real roots, certified: what the stable formula's two
 /// quotients share.
 #[derive(Clone, Copy, Debug)]
@@ -147,8 +158,7 @@ pub(crate) fn stable_pair(k: &Coeffs) -> Option<Option<StablePair>> {
     let e_disc = k.e_disc * margin;
     let two_roots = k.disc > e_disc;
     if !two_roots {
-        // A NaN or infinite bound (overflow) certifies nothing.
-        return (k.disc < -e_disc && e_disc < f64::INFINITY).then_some(None);
+        return certified_negative(k.disc, k.e_disc).then_some(None);
     }
     let s = sqrt(k.disc);
     let q = -(k.b + s.copysign(k.b));

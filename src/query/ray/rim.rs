@@ -16,7 +16,7 @@
 //! What stays approximate is what was: a point within a few ulps of the
 //! rim may go either way.
 
-use crate::arith::exponent::unit_pow2;
+use crate::arith::exponent::{pow2, scale_pow2, unit_pow2, unit_scale};
 use glam::DVec3;
 
 /// Whether `|v| <= radius`, computed as `|v s|^2 <= (radius s)^2` at the
@@ -40,18 +40,27 @@ pub(super) fn within_axis_radius(v: DVec3, axis: DVec3, radius: f64) -> bool {
     radial.dot(radial) <= r * r * a.dot(a)
 }
 
-/// `(v . a, a . a)` with `v` and `a` both scaled by the power of two that
-/// brings `a` near 1: the height of the point `v` (from the axis's base)
-/// along the axis `a` against the axis's own, for the test `0 <= h <= |a|^2`
-/// of a capped cylinder's side and a cone's nappe. Both scale by the same
-/// `4^k`, so the comparison is the unscaled one wherever that was normal,
-/// and `a . a` no longer underflows for axes below about `1e-154` (where
-/// every point of the infinite surface passed as "between the caps").
+/// `(h, s)` with `0 <= h <= s` exactly when `0 <= v . a <= a . a`: the
+/// height of the point `v` (from the axis's base) along the axis `a`
+/// against the axis's own, for the test of a capped cylinder's side and a
+/// cone's nappe. `v` and `a` are each brought near 1 by their own power of
+/// two, `h = (v 2^kv) . (a 2^ka)` and `s = |a 2^ka|^2 2^(kv - ka)`: both
+/// are the unscaled ones times `2^(kv + ka)`, so the comparisons are the
+/// unscaled ones wherever those were normal. Scaled by the axis's power
+/// alone, a point far nearer the base than the axis is long underflowed
+/// to `h = 0` (a fuzz-like finding of the capped cone's test: a point
+/// `1e-147` below a cone's apex along an axis of length `1e177` passed as
+/// on its nappe); `a . a` no longer underflows for axes below about
+/// `1e-154` (where every point of the infinite surface passed as
+/// "between the caps"). `s` overflows to infinity only where `|a|` exceeds
+/// `|v|` by more than `2^1023`, and underflows only where `|v|` exceeds
+/// `|a|` by as much: the comparison is right there at `f64`'s resolution.
 #[inline]
 pub(super) fn heights(v: DVec3, axis: DVec3) -> (f64, f64) {
-    let s = unit_pow2(axis.abs().max_element());
-    let (v, a) = (v * s, axis * s);
-    (v.dot(a), a.dot(a))
+    let unit = |v: DVec3| unit_scale(&v.to_array()).clamp(-1000, 1000);
+    let (kv, ka) = (unit(v), unit(axis));
+    let (v, a) = (v * pow2(kv), axis * pow2(ka));
+    (v.dot(a), scale_pow2(a.dot(a), kv - ka))
 }
 
 /// The axis `a` scaled by the power of two that brings it near 1, `â`:
