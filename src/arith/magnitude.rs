@@ -19,3 +19,12 @@ pub(crate) fn largest_magnitude(vs: &[DVec3]) -> f64 {
         larger(larger(larger(m, a.x), a.y), a.z)
     })
 }
+
+/// Whether every value is zero or at least `least` in magnitude (`false`
+/// for NaN): the filters' difference guards, which a zero difference
+/// passes (its products are exactly zero, they cannot underflow), where
+/// their quick test, the smallest magnitude, turns zeros away.
+#[inline]
+pub(crate) fn zero_or_at_least(values: &[f64], least: f64) -> bool {
+    values.iter().all(|&v| v == 0.0 || v.abs() >= least)
+}

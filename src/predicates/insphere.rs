@@ -6,8 +6,11 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
+use crate::arith::exponent::{
+    Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
+};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
+use crate::arith::magnitude::{larger, zero_or_at_least};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -50,15 +53,23 @@ const SCALED_SLACK: f64 = 16777216.0 * TINY;
 pub(super) fn insphere(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
     match filtered(&[a, b, c, d, e], None) {
         Ok(s) => s,
-        Err(permanent) => exact(a, b, c, d, e, in_range(permanent)),
+        Err(declined) => exact(a, b, c, d, e, declined),
     }
+}
+
+/// What a filter that declined computed: its permanent and its error bound
+/// `A * permanent + slack`, both NaN when the difference guard declined.
+#[derive(Clone, Copy)]
+struct Declined {
+    permanent: f64,
+    bound: f64,
 }
 
 /// Stage 1 (and 4, on scaled input with `Some(slack)`): Shewchuk's stage A
 /// determinant, certified by a forward error bound. With `None`, the
 /// difference guard makes the bound hold under underflow instead.
 #[inline(always)]
-fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
+fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined> {
     let e = p[4];
     let (ae, be, ce, de) = (p[0] - e, p[1] - e, p[2] - e, p[3] - e);
     let slack = match scaled_slack {
@@ -69,8 +80,14 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
                 .min(ce.abs())
                 .min(de.abs())
                 .min_element();
-            if m < GUARD_MIN_DIFF || m.is_nan() {
-                return Err(f64::NAN);
+            let diffs = [ae, be, ce, de].map(|v| v.to_array());
+            if (m < GUARD_MIN_DIFF || m.is_nan())
+                && !zero_or_at_least(diffs.as_flattened(), GUARD_MIN_DIFF)
+            {
+                return Err(Declined {
+                    permanent: f64::NAN,
+                    bound: f64::NAN,
+                });
             }
             0.0
         }
@@ -116,34 +133,48 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
     } else if -det > bound {
         Ok(Sign::Positive)
     } else {
-        Err(permanent)
+        Err(Declined { permanent, bound })
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Sign {
+fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> Sign {
     let points = [a, b, c, d, e];
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
+    let in_range = in_range(stage1.permanent);
     let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
+    let max = coords.iter().fold(0.0, |m, v| larger(m, v.abs()));
     let scaled = || {
-        let k = unit_scale(&coords);
+        let k = unit_scale(&[max]);
         points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)))
     };
+    // Stage 2, and the lattice stage (`small_integer`): stage 1's bound
+    // is NaN where its difference guard declined.
+    let small = small_integer(&coords, max, SMALL_SPAN, 5, stage1.bound);
+    if let SmallInteger::Zero = small {
+        return Sign::Zero;
+    }
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
     let scaled_filter = |s: [DVec3; 5]| filtered(&s, Some(SCALED_SLACK)).ok();
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
+    if let SmallInteger::Integers(ints) = small {
+        return integer::<1, 2, 3, 5>(|i| {
+            [
+                FixedInt::from_i64(ints[3 * i]),
+                FixedInt::from_i64(ints[3 * i + 1]),
+                FixedInt::from_i64(ints[3 * i + 2]),
+            ]
+        });
+    }
     let grain = Grain::of(&coords);
     if grain.all_zero() {
         return Sign::Zero;
-    }
-    if grain.span() <= SMALL_SPAN {
-        return integer::<1, 2, 3, 5>(&points, grain.lo_min);
     }
     let s = scaled();
     if grain.span() <= ADAPTIVE_SPAN {
@@ -163,26 +194,36 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Si
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    integer::<DEG1, DEG2, DEG3, DEG5>(&points, grain.lo_min)
+    super::sparse::insphere(points)
+        .unwrap_or_else(|| integer::<DEG1, DEG2, DEG3, DEG5>(at_grain(&points, grain.lo_min)))
 }
 
-/// Stages 2 and 5: coordinates as integers at the finest bit `lo`, with
-/// `D`-limb differences, `M`-limb 2x2 minors and lifts, `T`-limb 3x3
-/// minors, an `R`-limb result. Stage 2: `<1, 2, 3, 5>` (see `SMALL_SPAN`).
-/// Stage 5: `<34, 67, 100, 166>`: differences below `2^2099`, 2x2 minors
-/// and lifts below `2^4200`, 3x3 minors below `2^6300`, the determinant
-/// below `2^10502`.
+/// Point `i`'s coordinates as integers in units of `2^lo`, for `integer`.
+fn at_grain<const D: usize>(p: &[DVec3; 5], lo: i32) -> impl Fn(usize) -> [FixedInt<D>; 3] {
+    move |i| {
+        [
+            FixedInt::from_f64(p[i].x, lo),
+            FixedInt::from_f64(p[i].y, lo),
+            FixedInt::from_f64(p[i].z, lo),
+        ]
+    }
+}
+
+/// Stages 2 and 5: point `i`'s coordinates as integers `int(i)` (all at
+/// one scale), with `D`-limb differences, `M`-limb 2x2 minors and lifts,
+/// `T`-limb 3x3 minors, an `R`-limb result. Stage 2: `<1, 2, 3, 5>` (see
+/// `SMALL_SPAN`). Stage 5: `<34, 67, 100, 166>`: differences below
+/// `2^2099`, 2x2 minors and lifts below `2^4200`, 3x3 minors below
+/// `2^6300`, the determinant below `2^10502`.
 fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
-    p: &[DVec3; 5],
-    lo: i32,
+    int: impl Fn(usize) -> [FixedInt<D>; 3],
 ) -> Sign {
-    let int = |v: DVec3| [v.x, v.y, v.z].map(|x| FixedInt::<D>::from_f64(x, lo));
-    let e = int(p[4]);
-    let rel = |v: DVec3| {
-        let q = int(v);
+    let e = int(4);
+    let rel = |i: usize| {
+        let q = int(i);
         [q[0].sub(&e[0]), q[1].sub(&e[1]), q[2].sub(&e[2])]
     };
-    let r = [rel(p[0]), rel(p[1]), rel(p[2]), rel(p[3])];
+    let r = [rel(0), rel(1), rel(2), rel(3)];
     let m2 = |i: usize, j: usize| {
         FixedInt::<M>::mul(&r[i][0], &r[j][1]).sub(&FixedInt::mul(&r[j][0], &r[i][1]))
     };
@@ -203,4 +244,72 @@ fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
         .sub(&FixedInt::mul(&lift(0), &m3(1, 2, 3)))
         .sub(&FixedInt::mul(&lift(2), &m3(0, 1, 3)));
     -det.sign()
+}
+
+/// The big-integer stage alone, exact for every finite input: the
+/// reference the other stages' tests compare with.
+#[cfg(test)]
+pub(super) fn dense(p: [DVec3; 5]) -> Sign {
+    let grain = Grain::of(&p.map(|v| v.to_array()).concat());
+    if grain.all_zero() {
+        return Sign::Zero;
+    }
+    integer::<DEG1, DEG2, DEG3, DEG5>(at_grain(&p, grain.lo_min))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{InputClass, SplitMix64, insphere_case, step_ulps};
+
+    /// Cospherical lattice points (`2^2 + 3^2 + 6^2 = 7^2` and its
+    /// permutations and signs, around a lattice centre), scaled by `2^k`
+    /// over the whole exponent range, and the same with one coordinate
+    /// moved by one lattice step or one ulp: zeros the lattice stage must
+    /// certify, and non-zeros it must leave alone.
+    #[test]
+    fn lattice_zeros_and_their_neighbours() {
+        let mut rng = SplitMix64::new(23);
+        let (mut zeros, mut cases) = (0, 0);
+        for i in 0..10_000 {
+            let centre: [f64; 3] = core::array::from_fn(|_| (rng.next_u64() % 64) as f64 - 32.0);
+            let mut p = [(); 5].map(|_| {
+                let mut v =
+                    [2.0, 3.0, 6.0, 7.0].map(|x| if rng.next_u64() & 1 == 0 { x } else { -x });
+                // A point on the sphere of radius 7: a permutation of
+                // (2, 3, 6), or (7, 0, 0).
+                let r = (rng.next_u64() % 4) as usize;
+                let w = if r == 3 {
+                    [v[3], 0.0, 0.0]
+                } else {
+                    [v[0], v[1], v[2]]
+                };
+                v = [w[r % 3], w[(r + 1) % 3], w[(r + 2) % 3], 0.0];
+                DVec3::new(centre[0] + v[0], centre[1] + v[1], centre[2] + v[2])
+            });
+            let k = (rng.next_u64() % 1600) as i32 - 800;
+            let scale = |v: f64| v * pow2(k / 2) * pow2(k - k / 2);
+            p = p.map(|v| DVec3::new(scale(v.x), scale(v.y), scale(v.z)));
+            let (j, c) = ((rng.next_u64() % 5) as usize, (rng.next_u64() % 3) as usize);
+            match i % 3 {
+                1 => p[j][c] += scale(1.0),
+                2 => p[j][c] = step_ulps(p[j][c], 1),
+                _ => {}
+            }
+            let exact = dense(p);
+            assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), exact, "{p:?}");
+            zeros += (exact == Sign::Zero) as u32;
+            cases += 1;
+        }
+        assert!(zeros > cases / 4, "{zeros} of {cases}");
+    }
+
+    #[test]
+    fn every_class_matches_dense_integers() {
+        let mut rng = SplitMix64::new(6);
+        for i in 0..6_000 {
+            let p = insphere_case(InputClass::ALL[i % 6], &mut rng);
+            assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), dense(p), "{p:?}");
+        }
+    }
 }

@@ -5,9 +5,10 @@
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
 use super::sparse;
-use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
+use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_integers, unit_scale};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
+use crate::arith::magnitude::larger;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -53,7 +54,20 @@ const LIFT: f64 = pow2(1000);
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
     match filtered(a, b, c, d, 0.0) {
         Ok(s) => s,
-        Err(permanent) => exact(a, b, c, d, in_range(permanent)),
+        Err(permanent) => declined(a, b, c, d, permanent),
+    }
+}
+
+/// Stages 2 to 5 for an input stage 1 declined, given its permanent: first
+/// the quick integer entry (`unit_integer`), which answers almost every
+/// near-degenerate and degenerate input without leaving this function,
+/// then the cold ladder.
+#[inline(always)]
+pub(super) fn declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
+    if in_range(permanent) {
+        in_range_declined(&[a, b, c, d])
+    } else {
+        exact(&[a, b, c, d], false)
     }
 }
 
@@ -126,17 +140,39 @@ pub(super) fn certifies(margin: f64, zsum: f64, extra_slack: f64) -> bool {
     margin > (Z_SLACK * LIFT) * zsum + (UNDERFLOW_SLACK + extra_slack) * LIFT
 }
 
-/// Stages 2 to 5 for an input stage 1 declined, given its permanent.
+/// [`declined`] for an input whose permanent was in range (genuinely near
+/// degenerate): the quick integer entry, then the cold ladder.
+#[inline(never)]
+fn in_range_declined(points: &[DVec3; 4]) -> Sign {
+    match unit_integer(points) {
+        Some(sign) => sign,
+        None => exact(points, true),
+    }
+}
+
+/// Stage 2: each axis as integers below `2^SMALL_SPAN` at its own scale,
+/// found without counting bits (`unit_integers`), the determinant in
+/// `small_det3`; `None` when an axis spans more bits.
 #[inline(always)]
-pub(super) fn declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
-    exact(a, b, c, d, in_range(permanent))
+fn unit_integer(p: &[DVec3; 4]) -> Option<Sign> {
+    let axis = |k: usize| {
+        let v = [p[0][k], p[1][k], p[2][k], p[3][k]];
+        let max = larger(
+            larger(v[0].abs(), v[1].abs()),
+            larger(v[2].abs(), v[3].abs()),
+        );
+        unit_integers(&v, max, SMALL_SPAN)
+    };
+    let ((x, _), (y, _), (z, _)) = (axis(0)?, axis(1)?, axis(2)?);
+    let rel = |i: usize| [x[i] - x[0], y[i] - y[0], z[i] - z[0]];
+    Some(small_det3([rel(1), rel(2), rel(3)]))
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
-    let points = [a, b, c, d];
+fn exact(points: &[DVec3; 4], in_range: bool) -> Sign {
+    let [a, b, c, d] = *points;
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
@@ -160,6 +196,10 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
+    // (In range, `declined` has tried it.)
+    if !in_range && let Some(sign) = unit_integer(points) {
+        return sign;
+    }
     let grains = [
         Grain::of(&axis(0)),
         Grain::of(&axis(1)),
@@ -169,10 +209,8 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
         return Sign::Zero;
     }
     let lo = grains.map(|g| g.lo_min);
+    // Every span is more than `SMALL_SPAN` here (`unit_integer` declined).
     let span = grains.iter().map(|g| g.span()).max().unwrap_or(0);
-    if span <= SMALL_SPAN {
-        return small_integer(&points, lo);
-    }
     let s = scaled();
     if span <= ADAPTIVE_SPAN {
         let p = |v: DVec3| robust::Coord3D {
@@ -185,25 +223,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(&points, lo))
-}
-
-/// Stage 2: each axis as integers at its finest bit, in native integers
-/// (see `SMALL_SPAN`).
-fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
-    let int = |v: DVec3| {
-        [
-            to_integer_i64(v.x, lo[0]),
-            to_integer_i64(v.y, lo[1]),
-            to_integer_i64(v.z, lo[2]),
-        ]
-    };
-    let a = int(p[0]);
-    let rel = |v: DVec3| {
-        let q = int(v);
-        [q[0] - a[0], q[1] - a[1], q[2] - a[2]]
-    };
-    small_det3([rel(p[1]), rel(p[2]), rel(p[3])])
+    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(points, lo))
 }
 
 /// The sign of `det[b, c, d]` for integer rows below `2^62` in magnitude:
