@@ -151,6 +151,22 @@ pub(crate) fn unit_integers<const N: usize>(
     exact.then_some((ints, s))
 }
 
+/// The exponent of the finest bit set in any of `values`: each is an
+/// integer multiple of `2^lowest_bit(values)`. `i32::MAX` when all are
+/// zero; for a non-finite value, some exponent (the caller has checked).
+#[inline(always)]
+pub(crate) fn lowest_bit(values: &[f64]) -> i32 {
+    values.iter().fold(i32::MAX, |lo, &v| {
+        let bits = v.to_bits();
+        let field = ((bits >> 52) & 0x7ff) as i32;
+        // The significand with its hidden bit at 52: its trailing zeros
+        // are those of the fraction for a normal value, at most 52.
+        let tz = (bits | 1 << 52).trailing_zeros() as i32;
+        let bit = field.max(1) - 1075 + tz;
+        if v == 0.0 { lo } else { lo.min(bit) }
+    })
+}
+
 /// What the small-integer stage makes of the coordinates of a determinant
 /// that is a degree-`degree` integer polynomial in their differences, once
 /// a filter declined it with the error bound `bound`.

@@ -9,7 +9,7 @@ use crate::arith::exponent::{
     Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
-use crate::arith::magnitude::{larger, zero_or_at_least};
+use crate::arith::magnitude::{largest_abs, zero_or_at_least};
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -122,12 +122,9 @@ fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign
 #[inline(never)]
 fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
     let points = [a, b, c, d];
-    if !points.iter().all(|p| p.is_finite()) {
-        return Sign::Zero;
-    }
     let in_range = in_range(stage1.permanent);
     let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
-    let max = coords.iter().fold(0.0, |m, v| larger(m, v.abs()));
+    let max = largest_abs(&coords);
     let scaled = || {
         let k = unit_scale(&[max]);
         points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)))
@@ -136,6 +133,10 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
     // is NaN where its difference guard declined.
     let small = small_integer(&coords, max, SMALL_SPAN, 4, stage1.bound);
     if let SmallInteger::Zero = small {
+        return Sign::Zero;
+    }
+    // (Non-finite input is never `SmallInteger::Zero`.)
+    if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.

@@ -7,10 +7,11 @@
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
 use crate::arith::exponent::{
-    Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
+    Grain, SmallInteger, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2,
+    small_integer, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
-use crate::arith::magnitude::{larger, zero_or_at_least};
+use crate::arith::magnitude::{all_within, larger3, largest_abs, zero_or_at_least};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -49,12 +50,119 @@ const ADAPTIVE_SPAN: i32 = 180;
 /// of them: `9216 * 2^-1073 < 2^-1059`. `2^-1050` leaves a factor over 300.
 const SCALED_SLACK: f64 = 16777216.0 * TINY;
 
+/// Factor of the semi-static bound, `24 A (1 + 2^-40)` (see
+/// `semi_static`).
+const SEMI_STATIC: f64 = 24.0 * A * (1.0 + 1.0 / (1u64 << 40) as f64);
+
+/// Range of the per-axis largest differences within which the semi-static
+/// filter runs: `[2^-190, 2^190]` (see `semi_static`).
+const SEMI_STATIC_MIN: f64 = pow2(-190);
+const SEMI_STATIC_MAX: f64 = pow2(190);
+
 #[inline(always)]
 pub(super) fn insphere(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
-    match filtered(&[a, b, c, d, e], None) {
+    match semi_static(a, b, c, d, e) {
         Ok(s) => s,
-        Err(declined) => exact(a, b, c, d, e, declined),
+        Err(semi) => declined(&[a, b, c, d, e], semi),
     }
+}
+
+/// Stages 1 to 5 for an input the semi-static filter declined. A computed
+/// determinant of exactly zero (in range) goes straight to the exact
+/// stages, with the semi-static bound: stage 1 could not certify it
+/// either.
+#[inline(never)]
+fn declined(p: &[DVec3; 5], semi: Option<(f64, Declined)>) -> Sign {
+    if let Some((det, semi)) = semi
+        && det == 0.0
+    {
+        // The lattice stage as in `small_integer`, with the finest bit of
+        // the coordinates found directly: the determinant (degree 5) is a
+        // multiple of `2^(5 lo)`, and the semi-static bound held.
+        let coords = p.map(|v| v.to_array());
+        let lo = lowest_bit(coords.as_flattened());
+        if below_lattice(semi.bound, lo.saturating_mul(5)) {
+            return Sign::Zero;
+        }
+        return exact(p[0], p[1], p[2], p[3], p[4], semi);
+    }
+    match filtered(p, None) {
+        Ok(s) => s,
+        Err(declined) => exact(p[0], p[1], p[2], p[3], p[4], declined),
+    }
+}
+
+/// Stage 0, the semi-static filter: Shewchuk's stage A determinant with a
+/// bound from the largest difference on each axis, `X`, `Y`, `Z`, rather
+/// than from the permanent: fewer operations, a slightly larger bound.
+/// When it cannot certify the sign: `Err(Some((det, declined)))` in range
+/// (`declined` with the bound below and, as the permanent, the bound on it
+/// `24 X Y Z S`), `Err(None)` out of range.
+///
+/// Bound. With `S = X^2 + Y^2 + Z^2`, each lift is at most `S`, each 2x2
+/// permanent `|x y'| + |x' y|` at most `2 X Y`, each 3x3 permanent at most
+/// `3 Z 2 X Y`, so the permanent of stage 1 (four lifts times 3x3
+/// permanents) is at most `24 X Y Z S` exactly, and as computed at most
+/// `(1 + gamma(12))` times that. Stage 1's bound, `A` times the permanent,
+/// is then at most `24 A (1 + gamma(12)) X Y Z S`; `SEMI_STATIC`'s `2^-40`
+/// covers `gamma(12)`, the seven roundings of `fl(SEMI_STATIC X Y Z S)`
+/// and the underflow below, many times over.
+///
+/// Range. With every per-axis largest difference in `[2^-190, 2^190]`
+/// nothing overflows (every term is below `24 * 2^950`), and a product
+/// that underflows is off by `2^-1075` absolutely; carried to the
+/// determinant by the factors after it (at most `Z S`, `S`, `6 X Y Z` or
+/// 1), the worst, a final product's, is below `2^-78` of `24 A X Y Z S >=
+/// 2^-44 * 2^-950`, the others far smaller, and fewer than 64 of them sum
+/// below `2^-70` of the bound.
+#[inline(always)]
+fn semi_static(
+    a: DVec3,
+    b: DVec3,
+    c: DVec3,
+    d: DVec3,
+    e: DVec3,
+) -> Result<Sign, Option<(f64, Declined)>> {
+    let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
+    let m = larger3(larger3(ae.abs(), be.abs()), larger3(ce.abs(), de.abs()));
+    let in_range = all_within(m, SEMI_STATIC_MIN, SEMI_STATIC_MAX);
+    let det = lifted_det(ae, be, ce, de);
+    let permanent = (m.x * m.y * m.z) * m.length_squared();
+    let bound = SEMI_STATIC * permanent;
+    if !in_range {
+        Err(None)
+    } else if det > bound {
+        Ok(Sign::Negative)
+    } else if -det > bound {
+        Ok(Sign::Positive)
+    } else {
+        let permanent = 24.0 * permanent;
+        Err(Some((det, Declined { permanent, bound })))
+    }
+}
+
+/// Shewchuk's stage A in-sphere determinant of the rows `ae`, `be`, `ce`,
+/// `de` (each point minus `e`), expanded along the lift column; positive
+/// for "inside" under his orientation convention, the opposite of ours.
+#[inline(always)]
+fn lifted_det(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> f64 {
+    let ab = ae.x * be.y - be.x * ae.y;
+    let bc = be.x * ce.y - ce.x * be.y;
+    let cd = ce.x * de.y - de.x * ce.y;
+    let da = de.x * ae.y - ae.x * de.y;
+    let ac = ae.x * ce.y - ce.x * ae.y;
+    let bd = be.x * de.y - de.x * be.y;
+    let abc = ae.z * bc - be.z * ac + ce.z * ab;
+    let bcd = be.z * cd - ce.z * bd + de.z * bc;
+    let cda = ce.z * da + de.z * ac + ae.z * cd;
+    let dab = de.z * ab + ae.z * bd + be.z * da;
+    let (al, bl, cl, dl) = (
+        ae.length_squared(),
+        be.length_squared(),
+        ce.length_squared(),
+        de.length_squared(),
+    );
+    (dl * abc - cl * dab) + (bl * cda - al * bcd)
 }
 
 /// What a filter that declined computed: its permanent and its error bound
@@ -93,24 +201,13 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined>
         }
         Some(s) => s,
     };
-    let ab = ae.x * be.y - be.x * ae.y;
-    let bc = be.x * ce.y - ce.x * be.y;
-    let cd = ce.x * de.y - de.x * ce.y;
-    let da = de.x * ae.y - ae.x * de.y;
-    let ac = ae.x * ce.y - ce.x * ae.y;
-    let bd = be.x * de.y - de.x * be.y;
-    let abc = ae.z * bc - be.z * ac + ce.z * ab;
-    let bcd = be.z * cd - ce.z * bd + de.z * bc;
-    let cda = ce.z * da + de.z * ac + ae.z * cd;
-    let dab = de.z * ab + ae.z * bd + be.z * da;
+    let det = lifted_det(ae, be, ce, de);
     let (al, bl, cl, dl) = (
         ae.length_squared(),
         be.length_squared(),
         ce.length_squared(),
         de.length_squared(),
     );
-    let det = (dl * abc - cl * dab) + (bl * cda - al * bcd);
-
     let pm = |u: DVec3, v: DVec3| (u.x * v.y).abs() + (v.x * u.y).abs();
     let (abp, bcp, cdp, dap, acp, bdp) = (
         pm(ae, be),
@@ -142,12 +239,9 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined>
 #[inline(never)]
 fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> Sign {
     let points = [a, b, c, d, e];
-    if !points.iter().all(|p| p.is_finite()) {
-        return Sign::Zero;
-    }
     let in_range = in_range(stage1.permanent);
     let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
-    let max = coords.iter().fold(0.0, |m, v| larger(m, v.abs()));
+    let max = largest_abs(&coords);
     let scaled = || {
         let k = unit_scale(&[max]);
         points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)))
@@ -156,6 +250,10 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> 
     // is NaN where its difference guard declined.
     let small = small_integer(&coords, max, SMALL_SPAN, 5, stage1.bound);
     if let SmallInteger::Zero = small {
+        return Sign::Zero;
+    }
+    // (Non-finite input is never `SmallInteger::Zero`.)
+    if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.

@@ -5,10 +5,12 @@
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
 use super::sparse;
-use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_integers, unit_scale};
+use crate::arith::exponent::{
+    Grain, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2, unit_integers, unit_scale,
+};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
-use crate::arith::magnitude::larger;
+use crate::arith::magnitude::{all_within, larger, larger3};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -50,12 +52,105 @@ const SCALED_SLACK: f64 = 1024.0 * TINY;
 /// operands are normal numbers (see `filtered`).
 const LIFT: f64 = pow2(1000);
 
+/// Factor of the semi-static bound, `6 A (1 + 2^-40)` (see `semi_static`).
+const SEMI_STATIC: f64 = 6.0 * A * (1.0 + 1.0 / (1u64 << 40) as f64);
+
+/// Range of the per-axis largest differences within which the semi-static
+/// filter runs: `[2^-290, 2^290]` (see `semi_static`).
+const SEMI_STATIC_MIN: f64 = pow2(-290);
+const SEMI_STATIC_MAX: f64 = pow2(290);
+
 #[inline(always)]
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
-    match filtered(a, b, c, d, 0.0) {
+    match semi_static(a, b, c, d) {
         Ok(s) => s,
-        Err(permanent) => declined(a, b, c, d, permanent),
+        Err(semi) => semi_declined(a, b, c, d, semi),
     }
+}
+
+/// Stages 1 to 5 for an input the semi-static filter declined: a computed
+/// determinant of exactly zero (in range), which stage 1 cannot certify
+/// either, goes straight to the exact stages.
+#[inline(never)]
+fn semi_declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, semi: Option<[f64; 3]>) -> Sign {
+    let permanent = match semi {
+        Some([0.0, permanent, bound]) => {
+            // The lattice stage: every term of the determinant is a
+            // product of one difference per axis, each a multiple of that
+            // axis's finest bit, so the determinant is a multiple of
+            // `2^lattice`; the semi-static bound held (in range), and one
+            // below a lattice step proves the zero (`below_lattice`).
+            let lattice = [
+                [a.x, b.x, c.x, d.x],
+                [a.y, b.y, c.y, d.y],
+                [a.z, b.z, c.z, d.z],
+            ]
+            .iter()
+            .fold(0i32, |l, axis| l.saturating_add(lowest_bit(axis)));
+            if below_lattice(bound, lattice) {
+                return Sign::Zero;
+            }
+            permanent
+        }
+        _ => match filtered(a, b, c, d, 0.0) {
+            Ok(s) => return s,
+            Err(permanent) => permanent,
+        },
+    };
+    let p = [a, b, c, d];
+    if in_range(permanent)
+        && let Some(sign) = unit_integer(&p)
+    {
+        return sign;
+    }
+    exact(&p, in_range(permanent))
+}
+
+/// Stage 0, the semi-static filter: stage 1's determinant with a bound
+/// from the largest difference on each axis, `X`, `Y`, `Z`, rather than
+/// from the permanent. When it cannot certify the sign: `Err(Some([det,
+/// 6 X Y Z, bound]))` in range, `Err(None)` out of range.
+///
+/// Bound. Each 2x2 permanent `|x y'| + |x' y|` is at most `2 X Y`, so the
+/// permanent of stage 1 is at most `3 Z 2 X Y = 6 X Y Z` exactly, and as
+/// computed at most `(1 + gamma(6))` times that; stage 1's bound `A` times
+/// it is at most `6 A (1 + gamma(6)) X Y Z`. `SEMI_STATIC`'s `2^-40`
+/// covers `gamma(6)`, the three roundings of `fl(SEMI_STATIC X Y Z)` and
+/// the underflow below many times over.
+///
+/// Range. With every per-axis largest difference in `[2^-290, 2^290]`
+/// nothing overflows (terms below `2^871`), `6 X Y Z` lies in `[2^-870,
+/// 2^873]` (within `in_range`), and a product that underflows is off by
+/// `2^-1075` absolutely: a minor's, times a `z` of at most `Z`, is below
+/// `2^-400` of the bound, a final one below `2^-150` of it (the bound is
+/// at least `2^-48 * 2^-870`).
+#[inline(always)]
+fn semi_static(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Result<Sign, Option<[f64; 3]>> {
+    let [a, b, c, d] = [a, b, c, d].map(|p| p.to_array());
+    let rel = |p: [f64; 3]| DVec3::new(p[0] - a[0], p[1] - a[1], p[2] - a[2]);
+    let (bb, cc, dd) = (rel(b), rel(c), rel(d));
+    let m = larger3(larger3(bb.abs(), cc.abs()), dd.abs());
+    let in_range = all_within(m, SEMI_STATIC_MIN, SEMI_STATIC_MAX);
+    let det = determinant(bb.to_array(), cc.to_array(), dd.to_array());
+    let permanent = m.x * m.y * m.z;
+    let bound = SEMI_STATIC * permanent;
+    if !in_range {
+        Err(None)
+    } else if det > bound {
+        Ok(Sign::Positive)
+    } else if -det > bound {
+        Ok(Sign::Negative)
+    } else {
+        Err(Some([det, 6.0 * permanent, bound]))
+    }
+}
+
+/// Stage 1's determinant of the rows `bb`, `cc`, `dd`, expanded along z.
+#[inline(always)]
+fn determinant<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> T {
+    bb[2] * (cc[0] * dd[1] - dd[0] * cc[1])
+        + cc[2] * (dd[0] * bb[1] - bb[0] * dd[1])
+        + dd[2] * (bb[0] * cc[1] - cc[0] * bb[1])
 }
 
 /// Stages 2 to 5 for an input stage 1 declined, given its permanent: first
@@ -117,7 +212,7 @@ pub(super) fn stage_a_rows<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> (T, 
     let bxdy = bb[0] * dd[1];
     let bxcy = bb[0] * cc[1];
     let cxby = cc[0] * bb[1];
-    let det = bb[2] * (cxdy - dxcy) + cc[2] * (dxby - bxdy) + dd[2] * (bxcy - cxby);
+    let det = determinant(bb, cc, dd);
     let (bz, cz, dz) = (bb[2].abs(), cc[2].abs(), dd[2].abs());
     let permanent = (cxdy.abs() + dxcy.abs()) * bz
         + (dxby.abs() + bxdy.abs()) * cz
@@ -155,15 +250,16 @@ fn in_range_declined(points: &[DVec3; 4]) -> Sign {
 /// `small_det3`; `None` when an axis spans more bits.
 #[inline(always)]
 fn unit_integer(p: &[DVec3; 4]) -> Option<Sign> {
-    let axis = |k: usize| {
-        let v = [p[0][k], p[1][k], p[2][k], p[3][k]];
+    let axis = |v: [f64; 4]| {
         let max = larger(
             larger(v[0].abs(), v[1].abs()),
             larger(v[2].abs(), v[3].abs()),
         );
         unit_integers(&v, max, SMALL_SPAN)
     };
-    let ((x, _), (y, _), (z, _)) = (axis(0)?, axis(1)?, axis(2)?);
+    let (x, _) = axis(p.map(|v| v.x))?;
+    let (y, _) = axis(p.map(|v| v.y))?;
+    let (z, _) = axis(p.map(|v| v.z))?;
     let rel = |i: usize| [x[i] - x[0], y[i] - y[0], z[i] - z[0]];
     Some(small_det3([rel(1), rel(2), rel(3)]))
 }
