@@ -129,10 +129,14 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
         let k = unit_scale(&[max]);
         points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)))
     };
-    // Stage 2, and the lattice stage (`small_integer`): stage 1's bound
-    // is NaN where its difference guard declined.
-    let small = small_integer(&coords, max, SMALL_SPAN, 4, stage1.bound);
-    if let SmallInteger::Zero = small {
+    // Stage 2, and the lattice stage (`small_integer`), which needs stage
+    // 1's bound: where that is NaN (its difference guard declined: tiny
+    // inputs) or infinite, the scaled filter comes first.
+    let small = stage1
+        .bound
+        .is_finite()
+        .then(|| small_integer(&coords, max, SMALL_SPAN, 4, stage1.bound));
+    if let Some(SmallInteger::Zero) = small {
         return Sign::Zero;
     }
     // (Non-finite input is never `SmallInteger::Zero`.)
@@ -144,6 +148,10 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
         |s: [DVec2; 4]| filtered(s[0], s[1], s[2], s[3], Guard::Slack(SCALED_SLACK)).ok();
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
+    }
+    let small = small.unwrap_or_else(|| small_integer(&coords, max, SMALL_SPAN, 4, f64::NAN));
+    if let SmallInteger::Zero = small {
+        return Sign::Zero;
     }
     if let SmallInteger::Integers(ints) = small {
         return integer::<1, 2, 4>(|i| {

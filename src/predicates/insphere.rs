@@ -246,10 +246,14 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> 
         let k = unit_scale(&[max]);
         points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)))
     };
-    // Stage 2, and the lattice stage (`small_integer`): stage 1's bound
-    // is NaN where its difference guard declined.
-    let small = small_integer(&coords, max, SMALL_SPAN, 5, stage1.bound);
-    if let SmallInteger::Zero = small {
+    // Stage 2, and the lattice stage (`small_integer`), which needs stage
+    // 1's bound: where that is NaN (its difference guard declined: tiny
+    // inputs) or infinite, the scaled filter comes first.
+    let small = stage1
+        .bound
+        .is_finite()
+        .then(|| small_integer(&coords, max, SMALL_SPAN, 5, stage1.bound));
+    if let Some(SmallInteger::Zero) = small {
         return Sign::Zero;
     }
     // (Non-finite input is never `SmallInteger::Zero`.)
@@ -260,6 +264,10 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> 
     let scaled_filter = |s: [DVec3; 5]| filtered(&s, Some(SCALED_SLACK)).ok();
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
+    }
+    let small = small.unwrap_or_else(|| small_integer(&coords, max, SMALL_SPAN, 5, f64::NAN));
+    if let SmallInteger::Zero = small {
+        return Sign::Zero;
     }
     if let SmallInteger::Integers(ints) = small {
         return integer::<1, 2, 3, 5>(|i| {
