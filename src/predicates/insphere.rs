@@ -418,4 +418,23 @@ mod tests {
             assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), dense(p), "{p:?}");
         }
     }
+
+    /// Inputs whose per-axis largest differences sit at the edges of the
+    /// semi-static filter's range (`2^-190`, `2^190`), some with a
+    /// coordinate so small that its products underflow, against the dense
+    /// integers.
+    #[test]
+    fn semi_static_range_edges() {
+        let mut rng = SplitMix64::new(43);
+        for i in 0..6_000 {
+            let mut p = insphere_case(InputClass::ALL[i % 3], &mut rng);
+            let e = if i % 2 == 0 { -191 } else { 188 } + (rng.next_u64() % 4) as i32;
+            p = p.map(|v| DVec3::new(scale_pow2(v.x, e), scale_pow2(v.y, e), scale_pow2(v.z, e)));
+            if i % 5 == 0 {
+                let (j, k) = ((rng.next_u64() % 5) as usize, (rng.next_u64() % 3) as usize);
+                p[j][k] = scale_pow2(p[j][k], -700);
+            }
+            assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), dense(p), "{p:?}");
+        }
+    }
 }

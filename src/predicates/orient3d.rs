@@ -389,3 +389,39 @@ pub(crate) fn det3_wide<const D: usize, const M: usize, const R: usize>(
         .add(&FixedInt::<R>::mul(&c[2], &minor(d, b)))
         .add(&FixedInt::<R>::mul(&d[2], &minor(b, c)))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{InputClass, SplitMix64, orient3d_case};
+
+    fn dense(p: [DVec3; 4]) -> Sign {
+        let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
+        let g = [0, 1, 2].map(|k| Grain::of(&axis(k)));
+        if g.iter().any(|g| g.all_zero()) {
+            return Sign::Zero;
+        }
+        integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
+    }
+
+    /// Inputs whose per-axis largest differences sit at the edges of the
+    /// semi-static filter's range (`2^-290`, `2^290`), some with a
+    /// coordinate so small that its products underflow, against the dense
+    /// integers.
+    #[test]
+    fn semi_static_range_edges() {
+        let mut rng = SplitMix64::new(41);
+        for i in 0..40_000 {
+            let mut p = orient3d_case(InputClass::ALL[i % 3], &mut rng);
+            for k in 0..3 {
+                let e = if i % 2 == 0 { -291 } else { 288 } + (rng.next_u64() % 4) as i32;
+                p.iter_mut().for_each(|v| v[k] = scale_pow2(v[k], e));
+            }
+            if i % 5 == 0 {
+                let (j, k) = ((rng.next_u64() % 4) as usize, (rng.next_u64() % 3) as usize);
+                p[j][k] = scale_pow2(p[j][k], -700);
+            }
+            assert_eq!(orient3d(p[0], p[1], p[2], p[3]), dense(p), "{p:?}");
+        }
+    }
+}
