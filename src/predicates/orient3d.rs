@@ -97,6 +97,32 @@ fn semi_declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, semi: Option<[f64; 3]>)
             Err(permanent) => permanent,
         },
     };
+    stages_2_to_5(a, b, c, d, permanent)
+}
+
+/// Stages 2 to 5 for an input stage 1 declined, given its permanent (the
+/// batch variant's entry for lanes whose determinant is not zero).
+#[inline(never)]
+pub(super) fn declined(p: &[DVec3; 4], permanent: f64) -> Sign {
+    if in_range(permanent)
+        && let Some(sign) = unit_integer(p)
+    {
+        return sign;
+    }
+    exact(p, in_range(permanent))
+}
+
+/// The whole ladder, out of line (the batch variant's entry for lanes whose
+/// determinant stage 1 computed as zero: the lattice stage takes those).
+#[inline(never)]
+pub(super) fn from_the_start(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
+    orient3d(a, b, c, d)
+}
+
+/// The quick integer entry (`unit_integer`), which answers almost every
+/// in-range input that reaches it, then the cold ladder.
+#[inline(always)]
+fn stages_2_to_5(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
     let p = [a, b, c, d];
     if in_range(permanent)
         && let Some(sign) = unit_integer(&p)
@@ -151,19 +177,6 @@ fn determinant<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> T {
     bb[2] * (cc[0] * dd[1] - dd[0] * cc[1])
         + cc[2] * (dd[0] * bb[1] - bb[0] * dd[1])
         + dd[2] * (bb[0] * cc[1] - cc[0] * bb[1])
-}
-
-/// Stages 2 to 5 for an input stage 1 declined, given its permanent: first
-/// the quick integer entry (`unit_integer`), which answers almost every
-/// near-degenerate and degenerate input without leaving this function,
-/// then the cold ladder.
-#[inline(always)]
-pub(super) fn declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
-    if in_range(permanent) {
-        in_range_declined(&[a, b, c, d])
-    } else {
-        exact(&[a, b, c, d], false)
-    }
 }
 
 /// Stage 1: the `f64` determinant expanded along z, certified by a forward
@@ -233,16 +246,6 @@ pub(super) fn stage_a_rows<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> (T, 
 #[inline(always)]
 pub(super) fn certifies(margin: f64, zsum: f64, extra_slack: f64) -> bool {
     margin > (Z_SLACK * LIFT) * zsum + (UNDERFLOW_SLACK + extra_slack) * LIFT
-}
-
-/// [`declined`] for an input whose permanent was in range (genuinely near
-/// degenerate): the quick integer entry, then the cold ladder.
-#[inline(never)]
-fn in_range_declined(points: &[DVec3; 4]) -> Sign {
-    match unit_integer(points) {
-        Some(sign) => sign,
-        None => exact(points, true),
-    }
 }
 
 /// Stage 2: each axis as integers below `2^SMALL_SPAN` at its own scale,
