@@ -11,7 +11,8 @@ use crate::arith::exponent::{
     small_integer, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
-use crate::arith::magnitude::{all_within, larger3, largest_abs, zero_or_at_least};
+use crate::arith::lanes::Pair;
+use crate::arith::magnitude::{all_within, larger, largest_abs, zero_or_at_least};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -123,10 +124,19 @@ fn semi_static(
     d: DVec3,
     e: DVec3,
 ) -> Result<Sign, Option<(f64, Declined)>> {
-    let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
-    let m = larger3(larger3(ae.abs(), be.abs()), larger3(ce.abs(), de.abs()));
+    let rows = row_pairs(a - e, b - e, c - e, d - e);
+    // The per-axis largest difference, `X`, `Y` and `Z`.
+    let largest = |ac: Pair, bd: Pair| {
+        let m = ac.abs().larger(bd.abs());
+        larger(m.lo(), m.hi())
+    };
+    let m = DVec3::new(
+        largest(rows[0], rows[1]),
+        largest(rows[2], rows[3]),
+        largest(rows[4], rows[5]),
+    );
     let in_range = all_within(m, SEMI_STATIC_MIN, SEMI_STATIC_MAX);
-    let det = lifted_det(ae, be, ce, de);
+    let det = lifted_det(rows);
     let permanent = (m.x * m.y * m.z) * m.length_squared();
     let bound = SEMI_STATIC * permanent;
     if !in_range {
@@ -141,11 +151,50 @@ fn semi_static(
     }
 }
 
-/// Shewchuk's stage A in-sphere determinant of the rows `ae`, `be`, `ce`,
-/// `de` (each point minus `e`), expanded along the lift column; positive
-/// for "inside" under his orientation convention, the opposite of ours.
+/// The rows `ae`, `be`, `ce`, `de` (each point minus `e`) as pairs: the x
+/// of `ae` and `ce`, the x of `be` and `de`, then the same for y and z.
 #[inline(always)]
-fn lifted_det(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> f64 {
+fn row_pairs(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> [Pair; 6] {
+    [
+        Pair::new(ae.x, ce.x),
+        Pair::new(be.x, de.x),
+        Pair::new(ae.y, ce.y),
+        Pair::new(be.y, de.y),
+        Pair::new(ae.z, ce.z),
+        Pair::new(be.z, de.z),
+    ]
+}
+
+/// Shewchuk's stage A in-sphere determinant of the rows (as `row_pairs`),
+/// expanded along the lift column, positive for "inside" under his
+/// orientation convention, the opposite of ours; two lanes at a time (rows
+/// `a`, `c` in one lane and `b`, `d` in the other, so SSE2 does two
+/// operations in one), with the same operations on the same operands in
+/// the same order as the scalar formula (`lifted_det_scalar`), so the same
+/// value and the same error bound.
+#[inline(always)]
+fn lifted_det([xac, xbd, yac, ybd, zac, zbd]: [Pair; 6]) -> f64 {
+    // [ab, cd], [bc, da], [ac, bd].
+    let ab_cd = xac * ybd - xbd * yac;
+    let bc_da = xbd * yac.swap() - xac.swap() * ybd;
+    let ac_bd = xac.lows(xbd) * yac.highs(ybd) - xac.highs(xbd) * yac.lows(ybd);
+    // [abc, cda] and [bcd, dab]; `[-ac, ac]` and `[-bd, bd]`.
+    let (ac, bd) = (ac_bd.lo(), ac_bd.hi());
+    let abc_cda = zac * bc_da + zbd * Pair::new(-ac, ac) + zac.swap() * ab_cd;
+    let bcd_dab = zbd * ab_cd.swap() + zac.swap() * Pair::new(-bd, bd) + zbd.swap() * bc_da;
+    // [al, cl] and [bl, dl].
+    let (l_ac, l_bd) = (
+        xac * xac + yac * yac + zac * zac,
+        xbd * xbd + ybd * ybd + zbd * zbd,
+    );
+    // [dl abc - cl dab, bl cda - al bcd].
+    let t = l_bd.swap() * abc_cda - l_ac.swap() * bcd_dab.swap();
+    t.lo() + t.hi()
+}
+
+/// Shewchuk's formula for [`lifted_det`], one operation at a time.
+#[cfg(test)]
+fn lifted_det_scalar(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> f64 {
     let ab = ae.x * be.y - be.x * ae.y;
     let bc = be.x * ce.y - ce.x * be.y;
     let cd = ce.x * de.y - de.x * ce.y;
@@ -201,7 +250,7 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined>
         }
         Some(s) => s,
     };
-    let det = lifted_det(ae, be, ce, de);
+    let det = lifted_det(row_pairs(ae, be, ce, de));
     let (al, bl, cl, dl) = (
         ae.length_squared(),
         be.length_squared(),
@@ -408,6 +457,21 @@ mod tests {
             cases += 1;
         }
         assert!(zeros > cases / 4, "{zeros} of {cases}");
+    }
+
+    /// The paired determinant is the scalar formula's, to the bit.
+    #[test]
+    fn paired_determinant_is_the_scalar_one() {
+        let mut rng = SplitMix64::new(8);
+        for i in 0..60_000 {
+            let [a, b, c, d, e] = insphere_case(InputClass::ALL[i % 6], &mut rng);
+            let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
+            let paired = lifted_det(row_pairs(ae, be, ce, de));
+            let scalar = lifted_det_scalar(ae, be, ce, de);
+            // (NaN where something overflowed, its sign bit unspecified.)
+            let same = paired.to_bits() == scalar.to_bits() || paired.is_nan() && scalar.is_nan();
+            assert!(same, "{paired} {scalar}: {a} {b} {c} {d} {e}");
+        }
     }
 
     #[test]
