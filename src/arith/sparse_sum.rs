@@ -122,22 +122,25 @@ impl<const N: usize, const L: usize> Terms<N, L> {
     /// When they would exceed `N` terms, nothing is added and the sum is
     /// marked incomplete: [`sign_of_sum`] then declines.
     #[inline]
-    pub(crate) fn push_product<const K: usize>(&mut self, negate: bool, f: [Diff; K]) {
+    pub(crate) fn push_product<const K: usize>(&mut self, negate: bool, f: &[Diff; K]) {
         const { assert!(K <= L) };
-        if f.iter().any(|d| d.n == 0) {
+        // Which factors have two terms, and how many terms the product
+        // has (none when a factor is zero).
+        let (mut two, mut count) = (0usize, 1usize);
+        for (i, d) in f.iter().enumerate() {
+            two |= ((d.n == 2) as usize) << i;
+            count *= d.n;
+        }
+        if count == 0 {
             return;
         }
-        if self.n + f.iter().map(|d| d.n).product::<usize>() > N {
+        if self.n + count > N {
             self.overflowed = true;
             return;
         }
         // Every choice of one term per factor: bit `i` of `pick` picks
         // factor `i`'s second term, so `pick` runs over the subsets of the
         // factors that have two.
-        let two = f
-            .iter()
-            .enumerate()
-            .fold(0usize, |m, (i, d)| m | ((d.n == 2) as usize) << i);
         let mut pick = 0usize;
         loop {
             let mut factors = [1u64; L];

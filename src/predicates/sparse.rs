@@ -30,8 +30,8 @@ pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
     let (bx, by) = (diff(b.x, a.x), diff(b.y, a.y));
     let (cx, cy) = (diff(c.x, a.x), diff(c.y, a.y));
     let mut terms = Terms::<8, 2>::new();
-    terms.push_product(false, [bx, cy]);
-    terms.push_product(true, [by, cx]);
+    terms.push_product(false, &[bx, cy]);
+    terms.push_product(true, &[by, cx]);
     sign_of_sum(&mut terms)
 }
 
@@ -73,19 +73,32 @@ pub(super) fn incircle(p: [DVec2; 4]) -> Option<Sign> {
     if product_terms(&incircle_translated(&coords, k)) <= 48 {
         lifted_sign::<48, 4, 4>(incircle_translated(&coords, k), k % 2 == 0)
     } else {
-        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2, 4>(&coords), false)
+        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&coords), false)
     }
 }
 
 /// The products of `det3` with point `k` as the origin (see [`incircle`]):
 /// the lifted 3x3 determinant expanded along the lift column, `lift_u (x_v
 /// y_w - y_v x_w)` over `(u, v, w)` cyclic, `lift_u = x_u^2 + y_u^2`.
-fn incircle_translated(p: &[[f64; 2]; 4], k: usize) -> impl Fn(&mut dyn FnMut(bool, [Diff; 4])) {
-    let rows: [[Diff; 2]; 3] = core::array::from_fn(|i| {
+fn incircle_translated(p: &[[f64; 2]; 4], k: usize) -> IncircleTranslated {
+    IncircleTranslated(core::array::from_fn(|i| {
         let q = p[i + (i >= k) as usize];
         [diff(q[0], p[k][0]), diff(q[1], p[k][1])]
-    });
-    move |push| {
+    }))
+}
+
+/// An expansion of a determinant into signed products of `K` differences.
+trait Expansion<const K: usize> {
+    /// Calls `push` with each signed product (`true`: negated).
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; K]));
+}
+
+/// The rows of [`incircle_translated`].
+struct IncircleTranslated([[Diff; 2]; 3]);
+
+impl Expansion<4> for IncircleTranslated {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; 4])) {
+        let rows = &self.0;
         for (u, v, w) in [(0, 1, 2), (1, 2, 0), (2, 0, 1)] {
             for c in 0..2 {
                 let (sq, v, w) = (rows[u][c], rows[v], rows[w]);
@@ -112,7 +125,7 @@ pub(super) fn insphere(p: [DVec3; 5]) -> Option<Sign> {
     let det5 = if product_terms(&insphere_translated(&coords, k)) <= 360 {
         lifted_sign::<360, 5, 5>(insphere_translated(&coords, k), k % 2 == 1)
     } else {
-        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3, 5>(&coords), false)
+        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&coords), false)
     };
     det5.map(|s| -s)
 }
@@ -121,12 +134,19 @@ pub(super) fn insphere(p: [DVec3; 5]) -> Option<Sign> {
 /// the lifted 4x4 determinant expanded along the lift column, the sum over
 /// rows `i` of `(-1)^(i + 1) lift_i M(i)`, `M(i)` the 3x3 determinant of
 /// the other three rows in order, each expanded along z as in `det3`.
-fn insphere_translated(p: &[[f64; 3]; 5], k: usize) -> impl Fn(&mut dyn FnMut(bool, [Diff; 5])) {
-    let rows: [[Diff; 3]; 4] = core::array::from_fn(|i| {
+fn insphere_translated(p: &[[f64; 3]; 5], k: usize) -> InsphereTranslated {
+    InsphereTranslated(core::array::from_fn(|i| {
         let q = p[i + (i >= k) as usize];
         core::array::from_fn(|c| diff(q[c], p[k][c]))
-    });
-    move |push| {
+    }))
+}
+
+/// The rows of [`insphere_translated`].
+struct InsphereTranslated([[Diff; 3]; 4]);
+
+impl Expansion<5> for InsphereTranslated {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; 5])) {
+        let rows = &self.0;
         for i in 0..4 {
             let o: [usize; 3] = core::array::from_fn(|j| j + (j >= i) as usize);
             for c in 0..3 {
@@ -141,21 +161,21 @@ fn insphere_translated(p: &[[f64; 3]; 5], k: usize) -> impl Fn(&mut dyn FnMut(bo
     }
 }
 
-/// The exact sign of the sum of the products an expansion visits, negated
-/// with `negate`; `None` when they do not fit.
+/// The exact sign of the sum of an expansion's products, negated with
+/// `negate`; `None` when they do not fit.
 fn lifted_sign<const N: usize, const L: usize, const K: usize>(
-    expansion: impl Fn(&mut dyn FnMut(bool, [Diff; K])),
+    expansion: impl Expansion<K>,
     negate: bool,
 ) -> Option<Sign> {
     let mut terms = Terms::<N, L>::new();
-    expansion(&mut |neg, f| terms.push_product(neg, f));
+    expansion.products(&mut |neg, f| terms.push_product(neg, &f));
     sign_of_sum(&mut terms).map(|s| if negate { -s } else { s })
 }
 
-/// How many terms the products an expansion visits add up to.
-fn product_terms<const K: usize>(expansion: &impl Fn(&mut dyn FnMut(bool, [Diff; K]))) -> usize {
+/// How many terms the products of an expansion add up to.
+fn product_terms<const K: usize>(expansion: &impl Expansion<K>) -> usize {
     let mut n = 0;
-    expansion(&mut |_, f| n += f.iter().map(Diff::len).product::<usize>());
+    expansion.products(&mut |_, f| n += f.iter().map(Diff::len).product::<usize>());
     n
 }
 
@@ -164,11 +184,17 @@ fn product_terms<const K: usize>(expansion: &impl Fn(&mut dyn FnMut(bool, [Diff;
 /// coordinates themselves: for each permutation, `D` coordinates times one
 /// squared coordinate of the lift (`K = D + 2` factors, each the one-term
 /// "difference" `v - 0`), with the permutation's sign.
-fn lifted_monomials<const N: usize, const D: usize, const K: usize>(
-    p: &[[f64; D]; N],
-) -> impl Fn(&mut dyn FnMut(bool, [Diff; K])) {
-    let v: [[Diff; D]; N] = p.map(|q| q.map(|x| diff(x, 0.0)));
-    move |push| {
+fn lifted_monomials<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> Monomials<N, D> {
+    Monomials(p.map(|q| q.map(|x| diff(x, 0.0))))
+}
+
+/// The coordinates of [`lifted_monomials`], as one-term differences.
+struct Monomials<const N: usize, const D: usize>([[Diff; D]; N]);
+
+impl<const N: usize, const D: usize, const K: usize> Expansion<K> for Monomials<N, D> {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; K])) {
+        const { assert!(K == D + 2 && N == D + 2) };
+        let v = &self.0;
         // `perm[c]` is the row of column `c`. Heap's algorithm: each
         // permutation differs from the last by one swap, so the parity
         // alternates.
@@ -221,8 +247,8 @@ fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
     let mut terms = Terms::<MAX_TERMS, 3>::new();
     // Expanded along z: z_u * (x_v y_w - x_w y_v) over (u, v, w) cyclic.
     for (u, v, w) in [(b, c, d), (c, d, b), (d, b, c)] {
-        terms.push_product(false, [u[2], v[0], w[1]]);
-        terms.push_product(true, [u[2], w[0], v[1]]);
+        terms.push_product(false, &[u[2], v[0], w[1]]);
+        terms.push_product(true, &[u[2], w[0], v[1]]);
     }
     sign_of_sum(&mut terms)
 }
@@ -335,7 +361,7 @@ mod tests {
             let c2 = p2.map(|v| [v.x, v.y]);
             let ways2: [Option<Sign>; 6] = core::array::from_fn(|k| match k {
                 0..4 => lifted_sign::<48, 4, 4>(incircle_translated(&c2, k), k % 2 == 0),
-                4 => lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2, 4>(&c2), false),
+                4 => lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&c2), false),
                 _ => incircle(p2),
             });
             let exact3 = super::super::insphere::dense(p3);
@@ -344,7 +370,7 @@ mod tests {
                 0..5 => {
                     lifted_sign::<360, 5, 5>(insphere_translated(&c3, k), k % 2 == 1).map(|s| -s)
                 }
-                5 => lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3, 5>(&c3), false).map(|s| -s),
+                5 => lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&c3), false).map(|s| -s),
                 _ => insphere(p3),
             });
             // The expansion over the coordinates always fits, and so does
