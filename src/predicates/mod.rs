@@ -186,7 +186,7 @@ pub fn try_orient2d(
 /// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z), Sign::Positive);
 /// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(0.3, 0.7, 0.0)), Sign::Zero);
 /// ```
-#[inline]
+#[inline(always)]
 pub fn orient3d(
     a: impl IntoDVec3,
     b: impl IntoDVec3,

@@ -64,7 +64,7 @@ const SEMI_STATIC_MAX: f64 = pow2(290);
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
     match semi_static(a, b, c, d) {
         Ok(s) => s,
-        Err(semi) => semi_declined(a, b, c, d, semi),
+        Err(semi) => semi_declined(a.to_array(), b.to_array(), c.to_array(), d.to_array(), semi),
     }
 }
 
@@ -72,7 +72,14 @@ pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
 /// determinant of exactly zero (in range), which stage 1 cannot certify
 /// either, goes straight to the exact stages.
 #[inline(never)]
-fn semi_declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, semi: Option<[f64; 3]>) -> Sign {
+fn semi_declined(
+    a: [f64; 3],
+    b: [f64; 3],
+    c: [f64; 3],
+    d: [f64; 3],
+    semi: Option<[f64; 3]>,
+) -> Sign {
+    let [a, b, c, d] = [a, b, c, d].map(DVec3::from_array);
     let permanent = match semi {
         Some([0.0, permanent, bound]) => {
             // The lattice stage: every term of the determinant is a
@@ -282,13 +289,14 @@ fn exact(points: &[DVec3; 4], in_range: bool) -> Sign {
             unit_scale(&axis(1)),
             unit_scale(&axis(2)),
         ];
-        points.map(|p| {
+        let s = |p: DVec3| {
             DVec3::new(
                 scale_pow2(p.x, scale[0]),
                 scale_pow2(p.y, scale[1]),
                 scale_pow2(p.z, scale[2]),
             )
-        })
+        };
+        [s(a), s(b), s(c), s(d)]
     };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
     let scaled_filter = |s: [DVec3; 4]| filtered(s[0], s[1], s[2], s[3], SCALED_SLACK).ok();
