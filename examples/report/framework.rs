@@ -3,6 +3,7 @@
 
 use exactray::testing::SplitMix64;
 use std::hint::black_box;
+use std::path::PathBuf;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -18,6 +19,9 @@ pub struct Config {
     pub reps: usize,
     /// Shortest timed loop, so that timer resolution does not matter.
     pub min_loop: Duration,
+    /// `--export-inputs DIR`: where the sign families write their cases
+    /// and exactray's answers (`export.rs`).
+    pub export: Option<PathBuf>,
 }
 
 impl Config {
@@ -29,6 +33,7 @@ impl Config {
                 working_set: 2048,
                 reps: 7,
                 min_loop: Duration::from_millis(2),
+                export: None,
             }
         } else {
             Config {
@@ -37,7 +42,20 @@ impl Config {
                 working_set: 2048,
                 reps: 21,
                 min_loop: Duration::from_millis(5),
+                export: None,
             }
+        }
+    }
+
+    /// `--stream`: every timed loop runs over all the cases of a class
+    /// rather than a working set that stays in cache, as a caller streaming
+    /// through a large input would; fewer repetitions (5, or 3 with
+    /// `--quick`) keep the slow classes' loops affordable.
+    pub fn streaming(self) -> Self {
+        Config {
+            working_set: usize::MAX,
+            reps: if self.quick { 3 } else { 5 },
+            ..self
         }
     }
 

@@ -4,14 +4,22 @@
 //!
 //! ```text
 //! cargo run --release --example report [-- --quick] [-- --only orient3d,incircle]
+//!     [-- --stream] [-- --export-inputs DIR]
 //! ```
 //! Prints a table (progress on stderr) and writes `target/report/report.md`,
 //! `report.json` and one `<family>.svg` per family.
+//!
+//! `--stream` times loops over every case of a class instead of a working
+//! set that stays in cache (`Config::streaming`). `--export-inputs DIR`
+//! also writes the sign families' cases, exactray's answers and this run's
+//! times into `DIR` (`export.rs`) for `tools/cgal-timing`, then runs as
+//! usual.
 //!
 //! To add a family: a module under `examples/report/` and a line in
 //! [`FAMILIES`]. The inputs come from `exactray::testing`, the exact answers
 //! from the `exactray-oracle` crate (`tests/oracle`).
 
+mod export;
 mod framework;
 mod heap;
 mod output;
@@ -68,19 +76,29 @@ const FAMILIES: &[(&str, Family)] = &[
 fn main() -> std::io::Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let quick = args.iter().any(|a| a == "--quick");
-    let only: Option<Vec<String>> = args
-        .iter()
-        .position(|a| a == "--only")
-        .and_then(|i| args.get(i + 1))
-        .map(|list| list.split(',').map(str::to_string).collect());
+    let value = |option: &str| {
+        args.iter()
+            .position(|a| a == option)
+            .and_then(|i| args.get(i + 1))
+    };
+    let only: Option<Vec<String>> =
+        value("--only").map(|list| list.split(',').map(str::to_string).collect());
+    const OPTIONS: [&str; 4] = ["--quick", "--only", "--stream", "--export-inputs"];
     if let Some(unknown) = args
         .iter()
-        .find(|a| a.starts_with("--") && *a != "--quick" && *a != "--only")
+        .find(|a| a.starts_with("--") && !OPTIONS.contains(&a.as_str()))
     {
-        eprintln!("unknown option {unknown}; options: --quick, --only family[,family...]");
+        eprintln!(
+            "unknown option {unknown}; options: --quick, --only family[,family...], --stream, \
+             --export-inputs DIR"
+        );
         std::process::exit(2);
     }
-    let cfg = Config::new(quick);
+    let mut cfg = Config::new(quick);
+    if args.iter().any(|a| a == "--stream") {
+        cfg = cfg.streaming();
+    }
+    cfg.export = value("--export-inputs").map(std::path::PathBuf::from);
     let families: Vec<_> = FAMILIES
         .iter()
         .filter(|(name, _)| only.as_ref().is_none_or(|o| o.iter().any(|n| n == name)))
@@ -130,7 +148,7 @@ fn main() -> std::io::Result<()> {
         if quick { "Quick" } else { "Full" },
         cfg.cases,
         cfg.reps,
-        cfg.working_set,
+        cfg.working_set.min(cfg.cases),
         if notes.is_empty() {
             String::new()
         } else {
@@ -147,6 +165,13 @@ fn main() -> std::io::Result<()> {
     }
     std::fs::write(dir.join("report.md"), md)?;
     std::fs::write(dir.join("report.json"), output::json(&rows))?;
+    if let Some(export) = &cfg.export {
+        export::finish(export, &cfg, &rows)?;
+        eprintln!(
+            "wrote the exported inputs and times to {}",
+            export.display()
+        );
+    }
     eprintln!(
         "wrote {} in {:.1} s",
         dir.display(),

@@ -1,6 +1,7 @@
 //! Families whose answer is a sign: every method is checked case by case
 //! against the exact oracle.
 
+use crate::export::{Coords, write_class};
 use crate::framework::{Config, Measure, Row, time_methods};
 use exactray::Sign;
 use exactray::testing::{InputClass, SplitMix64};
@@ -52,7 +53,7 @@ pub struct SignFamily<C> {
     pub methods: Vec<Box<dyn Measure<C, i8>>>,
 }
 
-impl<C> SignFamily<C> {
+impl<C: Coords> SignFamily<C> {
     /// `cfg.cases` cases of one class, always the same ones.
     pub fn cases(&self, cfg: &Config, class: InputClass) -> Vec<C> {
         let mut rng = cfg.rng(self.name, class.name());
@@ -70,11 +71,14 @@ impl<C> SignFamily<C> {
             let timed = &cases[..cfg.working_set.min(cases.len())];
             let times = time_methods(cfg, timed, &self.methods);
             for (m, ns_per_op) in self.methods.iter().zip(times) {
-                let errors = cases
-                    .iter()
-                    .zip(&truth)
-                    .filter(|(c, t)| m.answer(c) != **t)
-                    .count();
+                let answers: Vec<i8> = cases.iter().map(|c| m.answer(c)).collect();
+                if let Some(dir) = &cfg.export
+                    && m.name() == "exactray"
+                {
+                    write_class(dir, self.name, class.name(), &cases, &answers)
+                        .unwrap_or_else(|e| panic!("--export-inputs {}: {e}", dir.display()));
+                }
+                let errors = answers.iter().zip(&truth).filter(|(a, t)| a != t).count();
                 rows.push(Row {
                     family: self.name,
                     method: m.name().to_string(),

@@ -86,7 +86,7 @@ impl<const N: usize> FixedInt<N> {
     }
 
     /// The value of an `i64`.
-    #[cfg(test)]
+    #[inline]
     pub(crate) fn from_i64(m: i64) -> Self {
         let mut r = Self {
             limbs: [if m < 0 { u64::MAX } else { 0 }; N],

@@ -1,23 +1,34 @@
 //! Exact signs of sums of products of coordinate differences that span
 //! thousands of bits but have few significant ones: sparse exact terms
-//! with explicit exponents, summed cluster by cluster (see
-//! [`sign_of_sum`]). The determinants built on it are in
-//! `predicates::sparse`.
+//! with explicit exponents, summed from the largest down until the rest
+//! cannot change the sign (see [`sign_of_sum`]). The determinants built on
+//! it are in `predicates::sparse`.
+
+#![allow(
+    unsafe_code,
+    reason = "reads back the terms written so far from uninitialized storage"
+)]
 
 use super::exponent::split;
 use crate::sign::Sign;
+use core::mem::MaybeUninit;
 
-/// Most terms a sum may have: orient3d's six products of three differences
-/// of up to two terms each, `6 * 2^3`. (orient2d has at most `2 * 2^2`.)
+/// Most terms orient3d's sum has: six products of three differences of up
+/// to two terms each, `6 * 2^3`. (orient2d has at most `2 * 2^2`.)
 pub(crate) const MAX_TERMS: usize = 48;
 
-/// Limbs of each of the two cluster accumulators (positive and negative
-/// parts): clusters up to `64 * ACC_LIMBS - GUARD_BITS` bits wide.
-const ACC_LIMBS: usize = 16;
+/// Most terms any sum may have: sort keys keep a term's index in their low
+/// [`INDEX_BITS`] bits.
+const TERMS_LIMIT: usize = 1 << INDEX_BITS;
+const INDEX_BITS: u32 = 10;
 
-/// `2^GUARD_BITS >= MAX_TERMS`: a sum of at most `MAX_TERMS` terms, each
-/// below `2^t`, is below `2^(t + GUARD_BITS)`.
-const GUARD_BITS: i32 = 6;
+/// Most limbs a term's magnitude may have: products of up to five factors
+/// below `2^63`.
+const MAX_LIMBS: usize = 5;
+
+/// Limbs of the running sum of [`sign_of_sum`], two's complement: `L + 1`
+/// of them are used.
+const WINDOW: usize = MAX_LIMBS + 1;
 
 /// A coordinate difference `p - q`: `n` exact terms `m * 2^e`, `|m| < 2^63`.
 #[derive(Clone, Copy)]
@@ -55,172 +66,270 @@ pub(crate) fn diff(p: f64, q: f64) -> Diff {
     d
 }
 
-/// An exact term `(-1)^neg * mag * 2^e`, `mag` little-endian, non-zero,
-/// below `2^(top - e)`.
+impl Diff {
+    /// How many terms the difference has: 0 (it is zero), 1 or 2.
+    #[inline(always)]
+    pub(crate) fn len(&self) -> usize {
+        self.n
+    }
+}
+
+/// An exact term `(-1)^neg * (factors[0] * ... * factors[L-1]) * 2^e`,
+/// its magnitude kept as its factors (each below `2^63`; `1` past the
+/// product's own) until [`sign_of_sum`] needs it: most terms of a sum
+/// never are multiplied out. `|term| < 2^top`, with `top - e <= 63 L`.
 #[derive(Clone, Copy)]
-pub(crate) struct Term {
-    mag: [u64; 3],
+pub(crate) struct Term<const L: usize> {
+    factors: [u64; L],
     neg: bool,
     e: i32,
     top: i32,
 }
 
-/// The terms of a signed sum of products of differences: room for `N <=
-/// MAX_TERMS` of them.
-pub(crate) struct Terms<const N: usize> {
-    t: [Term; N],
+/// The terms of a signed sum of products of at most `L` differences: room
+/// for `N <= 1024` of them. The room is left uninitialized (the sums that
+/// need hundreds of terms would spend more time clearing it than adding
+/// them up); the first `n` entries have been written.
+pub(crate) struct Terms<const N: usize, const L: usize> {
+    t: [MaybeUninit<Term<L>>; N],
     n: usize,
+    /// A product did not fit: the sum is incomplete.
+    overflowed: bool,
 }
 
-impl<const N: usize> Terms<N> {
+impl<const N: usize, const L: usize> Terms<N, L> {
     #[inline(always)]
     pub(crate) fn new() -> Self {
+        const { assert!(N <= TERMS_LIMIT && L <= MAX_LIMBS) };
         Terms {
-            t: [Term {
-                mag: [0; 3],
-                neg: false,
-                e: 0,
-                top: 0,
-            }; N],
+            t: [const { MaybeUninit::uninit() }; N],
             n: 0,
+            overflowed: false,
         }
     }
 
-    /// Adds `sign * f[0] * ... * f[K-1]`, expanded into its terms.
-    /// The caller keeps the total within `N`.
+    /// Term `i`, for `i < self.n`.
+    #[inline(always)]
+    fn get(&self, i: usize) -> &Term<L> {
+        assert!(i < self.n);
+        // SAFETY: `push_product` writes entries in order and counts them in
+        // `n`, so every entry below `n` is initialized.
+        unsafe { self.t[i].assume_init_ref() }
+    }
+
+    /// Adds `sign * f[0] * ... * f[K-1]`, expanded into its terms, for `K
+    /// <= L` (the product of `K` magnitudes below `2^63` fits `L` limbs).
+    /// When they would exceed `N` terms, nothing is added and the sum is
+    /// marked incomplete: [`sign_of_sum`] then declines.
     #[inline]
-    pub(crate) fn push_product<const K: usize>(&mut self, negate: bool, f: [Diff; K]) {
-        if f.iter().any(|d| d.n == 0) {
+    pub(crate) fn push_product<const K: usize>(&mut self, negate: bool, f: &[Diff; K]) {
+        const { assert!(K <= L) };
+        // Which factors have two terms, and how many terms the product
+        // has (none when a factor is zero).
+        let (mut two, mut count) = (0usize, 1usize);
+        for (i, d) in f.iter().enumerate() {
+            two |= ((d.n == 2) as usize) << i;
+            count *= d.n;
+        }
+        if count == 0 {
+            return;
+        }
+        if self.n + count > N {
+            self.overflowed = true;
             return;
         }
         // Every choice of one term per factor: bit `i` of `pick` picks
-        // factor `i`'s term (only 0 when it has one term).
-        for pick in 0..1usize << K {
-            if (0..K).any(|i| (pick >> i) & 1 >= f[i].n) {
-                continue;
-            }
-            let mut mag = [1u64, 0, 0];
+        // factor `i`'s second term, so `pick` runs over the subsets of the
+        // factors that have two.
+        let mut pick = 0usize;
+        loop {
+            let mut factors = [1u64; L];
             let mut neg = negate;
-            let mut e = 0;
+            let (mut e, mut bits) = (0, 0);
             for (i, d) in f.iter().enumerate() {
                 let (m, x) = d.t[(pick >> i) & 1];
-                mag = mul_small(mag, m.unsigned_abs());
+                factors[i] = m.unsigned_abs();
                 neg ^= m < 0;
                 e += x;
+                bits += 64 - factors[i].leading_zeros() as i32;
             }
-            let bits = if mag[2] != 0 {
-                192 - mag[2].leading_zeros()
-            } else if mag[1] != 0 {
-                128 - mag[1].leading_zeros()
-            } else {
-                64 - mag[0].leading_zeros()
-            };
-            self.t[self.n] = Term {
-                mag,
+            self.t[self.n].write(Term {
+                factors,
                 neg,
                 e,
-                top: e + bits as i32,
-            };
+                top: e + bits,
+            });
             self.n += 1;
-        }
-    }
-}
-
-/// `a * x` for `a < 2^128` (two factors below `2^63` so far) and
-/// `x < 2^63`: below `2^191`, three limbs.
-#[inline(always)]
-fn mul_small(a: [u64; 3], x: u64) -> [u64; 3] {
-    let lo = a[0] as u128 * x as u128;
-    let mid = a[1] as u128 * x as u128 + (lo >> 64);
-    let hi = a[2] as u128 * x as u128 + (mid >> 64);
-    [lo as u64, mid as u64, hi as u64]
-}
-
-/// Adds `mag * 2^shift` to `acc`, for a value that fits in `acc`.
-#[inline(always)]
-fn add_shifted(acc: &mut [u64; ACC_LIMBS], mag: [u64; 3], shift: u32) {
-    let (word, bit) = ((shift / 64) as usize, shift % 64);
-    let spread = if bit == 0 {
-        [mag[0], mag[1], mag[2], 0]
-    } else {
-        [
-            mag[0] << bit,
-            mag[1] << bit | mag[0] >> (64 - bit),
-            mag[2] << bit | mag[1] >> (64 - bit),
-            mag[2] >> (64 - bit),
-        ]
-    };
-    let mut carry = false;
-    let mut i = word;
-    for s in spread {
-        if i >= ACC_LIMBS {
-            return;
-        }
-        let (v1, c1) = acc[i].overflowing_add(s);
-        let (v2, c2) = v1.overflowing_add(carry as u64);
-        acc[i] = v2;
-        carry = c1 | c2;
-        i += 1;
-    }
-    while carry && i < ACC_LIMBS {
-        let (v, c) = acc[i].overflowing_add(1);
-        acc[i] = v;
-        carry = c;
-        i += 1;
-    }
-}
-
-/// The exact sign of the sum of `terms`, or `None` when a cluster is wider
-/// than the accumulators.
-///
-/// Terms sorted by `top` (descending) are gathered into a cluster from the
-/// first while the next term's `top + GUARD_BITS` exceeds the cluster's
-/// lowest exponent `lo`. When a term `j` stops the cluster, every later term
-/// has `top <= top_j`, so those at most `MAX_TERMS` terms sum to less than
-/// `2^(top_j + GUARD_BITS) <= 2^lo` in magnitude; the cluster's sum is a
-/// multiple of `2^lo`, so when it is not zero it is at least `2^lo` and its
-/// sign is the sign of the whole sum. When it is zero, the rest of the sum
-/// is the whole sum, and the next cluster is examined the same way.
-pub(crate) fn sign_of_sum<const N: usize>(terms: &mut Terms<N>) -> Option<Sign> {
-    // Sort keys: `top` (biased to be non-negative; it lies in (-3300,
-    // 3300)) above the term's index, so sorting the keys sorts the terms.
-    let n = terms.n;
-    let mut keys = [0u32; N];
-    for (i, (k, x)) in keys.iter_mut().zip(&terms.t[..n]).enumerate() {
-        *k = ((x.top + 4096) as u32) << 8 | i as u32;
-    }
-    keys[..n].sort_unstable_by(|a, b| b.cmp(a));
-    let t = |i: usize| &terms.t[(keys[i] & 255) as usize];
-    let mut i = 0;
-    while i < n {
-        let (hi, mut lo) = (t(i).top, t(i).e);
-        let mut j = i + 1;
-        while j < n && t(j).top + GUARD_BITS > lo {
-            lo = lo.min(t(j).e);
-            j += 1;
-        }
-        // The cluster's parts are below 2^(hi - lo + GUARD_BITS) in units of
-        // 2^lo; the accumulators hold 64 * ACC_LIMBS bits.
-        if hi - lo + GUARD_BITS > 64 * ACC_LIMBS as i32 {
-            return None;
-        }
-        let mut pos = [0u64; ACC_LIMBS];
-        let mut neg = [0u64; ACC_LIMBS];
-        for x in (i..j).map(t) {
-            let acc = if x.neg { &mut neg } else { &mut pos };
-            add_shifted(acc, x.mag, (x.e - lo) as u32);
-        }
-        // Compare the magnitudes from the top limb down.
-        for k in (0..ACC_LIMBS).rev() {
-            if pos[k] != neg[k] {
-                return Some(if pos[k] > neg[k] {
-                    Sign::Positive
-                } else {
-                    Sign::Negative
-                });
+            if pick == two {
+                break;
             }
+            pick = pick.wrapping_sub(two) & two;
         }
-        i = j;
+    }
+}
+
+impl<const L: usize> Term<L> {
+    /// The magnitude, multiplied out: below `2^(63 L)`.
+    #[inline(always)]
+    fn magnitude(&self) -> [u64; L] {
+        let mut mag = [0u64; L];
+        mag[0] = self.factors[0];
+        for (k, &x) in self.factors.iter().enumerate().skip(1) {
+            mul_small(&mut mag, k + 1, x);
+        }
+        mag
+    }
+}
+
+/// `a *= x` for `x < 2^63`, where `a` is a product of `k - 1` factors below
+/// `2^63` and so below `2^(63 (k - 1))`: the result is below `2^(63 k)`,
+/// and its limbs above `ceil(63 k / 64)` stay zero. The caller keeps
+/// `63 k <= 64 L`.
+#[inline(always)]
+fn mul_small<const L: usize>(a: &mut [u64; L], k: usize, x: u64) {
+    let limbs = (63 * k).div_ceil(64).min(L);
+    let mut carry = 0u128;
+    for limb in a.iter_mut().take(limbs) {
+        let t = *limb as u128 * x as u128 + carry;
+        *limb = t as u64;
+        carry = t >> 64;
+    }
+}
+
+/// The exact sign of the sum of `terms`, or `None` when a product did not
+/// fit `terms`.
+///
+/// Terms are taken from the largest bound `top` down (a max-heap of sort
+/// keys), multiplied out, and added into a running sum `S` held exactly as
+/// `WINDOW` limbs times `2^base`. After term `j`, the terms left are below
+/// `2^top_{j+1}` each, and fewer than `N <= 2^guard` of them sum to less
+/// than `2^(top_{j+1} + guard)`: when `|S| >= 2^(top_{j+1} + guard)` the
+/// sign of `S` is the sign of the whole sum. Otherwise `S` stays below that
+/// bound (up to the one bit `magnitude_bits` may underestimate);
+/// re-anchoring it at the next term's `base = top - 64 L` (a left shift:
+/// exact) and adding that term (whose exponent `e >= top - 63 L` lies
+/// above `base`) keeps it below `2^(64 L + guard + 2)` in units of
+/// `2^base`: inside `L + 1` limbs, two's complement (`guard <= 10`).
+pub(crate) fn sign_of_sum<const N: usize, const L: usize>(terms: &mut Terms<N, L>) -> Option<Sign> {
+    const { assert!(L <= MAX_LIMBS) };
+    if terms.overflowed {
+        return None;
+    }
+    let guard = (usize::BITS - (N - 1).leading_zeros()) as i32;
+    // Heap keys: `top` (biased to be non-negative; it lies in (-5500,
+    // 5500): at most five factors, each below `2^1087`, above `2^-1074`)
+    // above the term's index, so the largest key is the largest term.
+    let mut keys = [0u32; N];
+    let mut len = terms.n;
+    for (i, k) in keys.iter_mut().take(len).enumerate() {
+        *k = ((terms.get(i).top + 8192) as u32) << INDEX_BITS | i as u32;
+    }
+    for i in (0..len / 2).rev() {
+        sift_down(&mut keys[..len], i);
+    }
+    let term = |key: u32| terms.get((key & (TERMS_LIMIT as u32 - 1)) as usize);
+    let mut window = [0u64; WINDOW];
+    // `L + 1` limbs of it: enough (see above).
+    let sum = &mut window[..L + 1];
+    let mut base = 0;
+    while len > 0 {
+        let t = term(keys[0]);
+        len -= 1;
+        keys.swap(0, len);
+        sift_down(&mut keys[..len], 0);
+        let new_base = t.top - 64 * L as i32;
+        shift_left(sum, (base - new_base) as u32);
+        base = new_base;
+        add_term(sum, &t.magnitude(), t.neg, (t.e - base) as u32);
+        let (bits, negative) = magnitude_bits(sum);
+        let decided = match len {
+            0 => true,
+            _ => bits > 0 && bits - 1 + base >= term(keys[0]).top + guard,
+        };
+        if decided {
+            return Some(match (bits, negative) {
+                (0, _) => Sign::Zero,
+                (_, true) => Sign::Negative,
+                _ => Sign::Positive,
+            });
+        }
     }
     Some(Sign::Zero)
+}
+
+/// Restores the max-heap order of `keys` below position `i`.
+#[inline]
+fn sift_down(keys: &mut [u32], mut i: usize) {
+    loop {
+        let (l, r) = (2 * i + 1, 2 * i + 2);
+        let mut big = i;
+        if l < keys.len() && keys[l] > keys[big] {
+            big = l;
+        }
+        if r < keys.len() && keys[r] > keys[big] {
+            big = r;
+        }
+        if big == i {
+            return;
+        }
+        keys.swap(i, big);
+        i = big;
+    }
+}
+
+/// `sum * 2^shift`, for a value that stays inside `sum` (the bits shifted
+/// out are copies of the sign). A shift past its end leaves zero, which
+/// the caller only asks of a zero sum.
+#[inline(always)]
+fn shift_left(sum: &mut [u64], shift: u32) {
+    let (words, bit) = ((shift / 64) as usize, shift % 64);
+    for i in (0..sum.len()).rev() {
+        let lo = i.checked_sub(words).map_or(0, |k| sum[k]);
+        let below = i.checked_sub(words + 1).map_or(0, |k| sum[k]);
+        sum[i] = if bit == 0 {
+            lo
+        } else {
+            lo << bit | below >> (64 - bit)
+        };
+    }
+}
+
+/// `sum += (-1)^neg * mag * 2^shift`, two's complement, for `mag *
+/// 2^shift < 2^(64 L)` (`sum` has `L + 1` limbs).
+#[inline(always)]
+fn add_term<const L: usize>(sum: &mut [u64], mag: &[u64; L], neg: bool, shift: u32) {
+    let mut wide = [0u64; WINDOW];
+    let (words, bit) = ((shift / 64) as usize, shift % 64);
+    for (j, &m) in mag.iter().enumerate() {
+        let w = (m as u128) << bit;
+        if let Some(slot) = wide.get_mut(j + words) {
+            *slot |= w as u64;
+        }
+        if let Some(slot) = wide.get_mut(j + words + 1) {
+            *slot |= (w >> 64) as u64;
+        }
+    }
+    // Subtracting is adding the complement plus one.
+    let (flip, mut carry) = if neg { (u64::MAX, true) } else { (0, false) };
+    for (s, w) in sum.iter_mut().zip(wide) {
+        let (v1, c1) = s.overflowing_add(w ^ flip);
+        let (v2, c2) = v1.overflowing_add(carry as u64);
+        *s = v2;
+        carry = c1 | c2;
+    }
+}
+
+/// A lower bound `b` on the bit length of `|sum|` (`|sum| >= 2^(b - 1)`;
+/// `0` exactly when `sum` is zero), and whether `sum` is negative. For a
+/// negative `sum`, `|sum| = !sum + 1` is at least `2^(len(!sum) - 1)` and
+/// at least 1.
+#[inline(always)]
+fn magnitude_bits(sum: &[u64]) -> (i32, bool) {
+    let negative = (sum[sum.len() - 1] as i64) < 0;
+    let flip = if negative { u64::MAX } else { 0 };
+    let bits = match sum.iter().rposition(|&m| m ^ flip != 0) {
+        Some(k) => 64 * (k as i32 + 1) - (sum[k] ^ flip).leading_zeros() as i32,
+        None => 0,
+    };
+    (if negative { bits.max(1) } else { bits }, negative)
 }

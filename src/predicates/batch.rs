@@ -22,6 +22,7 @@
 )]
 
 use super::{orient2d, orient3d};
+use crate::arith::exponent::in_range;
 use crate::arith::lanes::{BLOCK, Block};
 use crate::point::{IntoDVec2, IntoDVec3};
 use crate::sign::Sign;
@@ -242,8 +243,15 @@ fn orient3d_many_in<P: IntoDVec3>(cases: &[[P; 4]], out: &mut [Sign]) -> usize {
             out[k] = if certified[k] {
                 sign_bits(det[k])
             } else {
-                let [a, b, c, d] = block[k].map(IntoDVec3::into_dvec3);
-                orient3d::declined(a, b, c, d, permanent[k])
+                let points = block[k].map(IntoDVec3::into_dvec3);
+                // A zero in range is likely exactly degenerate: the scalar
+                // ladder's lattice stage answers it.
+                if det[k] == 0.0 && in_range(permanent[k]) {
+                    let [a, b, c, d] = points;
+                    orient3d::from_the_start(a, b, c, d)
+                } else {
+                    orient3d::declined(&points, permanent[k])
+                }
             };
         }
     }

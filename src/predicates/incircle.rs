@@ -5,8 +5,11 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
+use crate::arith::exponent::{
+    Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
+};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
+use crate::arith::magnitude::{largest_abs, zero_or_at_least};
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -50,8 +53,16 @@ const SCALED_SLACK: f64 = 65536.0 * TINY;
 pub(super) fn incircle(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Sign {
     match filtered(a, b, c, d, Guard::MinDifference) {
         Ok(s) => s,
-        Err(permanent) => exact(a, b, c, d, in_range(permanent)),
+        Err(declined) => exact(a, b, c, d, declined),
     }
+}
+
+/// What a filter that declined computed: its permanent and its error bound
+/// `A * permanent + slack`, both NaN when the difference guard declined.
+#[derive(Clone, Copy)]
+struct Declined {
+    permanent: f64,
+    bound: f64,
 }
 
 /// What makes the filter's bound hold under underflow.
@@ -64,16 +75,20 @@ enum Guard {
 }
 
 /// Stage 1 (and 4, on scaled input): the `f64` determinant, certified by a
-/// forward error bound. `Err(permanent)` when the bound cannot certify the
-/// sign, `Err(NaN)` when the difference guard declined.
+/// forward error bound. `Err` when the bound cannot certify the sign, with
+/// NaN in it when the difference guard declined.
 #[inline(always)]
-fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign, f64> {
+fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign, Declined> {
     let (ad, bd, cd) = (a - d, b - d, c - d);
     let slack = match guard {
         Guard::MinDifference => {
             let m = ad.abs().min(bd.abs()).min(cd.abs()).min_element();
-            if m < GUARD_MIN_DIFF || m.is_nan() {
-                return Err(f64::NAN);
+            let diffs = [ad.x, ad.y, bd.x, bd.y, cd.x, cd.y];
+            if (m < GUARD_MIN_DIFF || m.is_nan()) && !zero_or_at_least(&diffs, GUARD_MIN_DIFF) {
+                return Err(Declined {
+                    permanent: f64::NAN,
+                    bound: f64::NAN,
+                });
             }
             0.0
         }
@@ -98,35 +113,57 @@ fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign
     } else if -det > bound {
         Ok(Sign::Negative)
     } else {
-        Err(permanent)
+        Err(Declined { permanent, bound })
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
+fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
     let points = [a, b, c, d];
+    let in_range = in_range(stage1.permanent);
+    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+    let max = largest_abs(&coords);
+    let scaled = || {
+        let k = unit_scale(&[max]);
+        points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)))
+    };
+    // Stage 2, and the lattice stage (`small_integer`), which needs stage
+    // 1's bound: where that is NaN (its difference guard declined: tiny
+    // inputs) or infinite, the scaled filter comes first.
+    let small = stage1
+        .bound
+        .is_finite()
+        .then(|| small_integer(&coords, max, SMALL_SPAN, 4, stage1.bound));
+    if let Some(SmallInteger::Zero) = small {
+        return Sign::Zero;
+    }
+    // (Non-finite input is never `SmallInteger::Zero`.)
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
-    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
-    let scaled = || {
-        let k = unit_scale(&coords);
-        points.map(|p| DVec2::new(scale_pow2(p.x, k), scale_pow2(p.y, k)))
-    };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
     let scaled_filter =
         |s: [DVec2; 4]| filtered(s[0], s[1], s[2], s[3], Guard::Slack(SCALED_SLACK)).ok();
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
+    let small = small.unwrap_or_else(|| small_integer(&coords, max, SMALL_SPAN, 4, f64::NAN));
+    if let SmallInteger::Zero = small {
+        return Sign::Zero;
+    }
+    if let SmallInteger::Integers(ints) = small {
+        return integer::<1, 2, 4>(|i| {
+            [
+                FixedInt::from_i64(ints[2 * i]),
+                FixedInt::from_i64(ints[2 * i + 1]),
+            ]
+        });
+    }
     let grain = Grain::of(&coords);
     if grain.all_zero() {
         return Sign::Zero;
-    }
-    if grain.span() <= SMALL_SPAN {
-        return integer::<1, 2, 4>(&points, grain.lo_min);
     }
     let s = scaled();
     if grain.span() <= ADAPTIVE_SPAN {
@@ -136,27 +173,34 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    integer::<DEG1, DEG2, DEG4>(&points, grain.lo_min)
+    super::sparse::incircle(points)
+        .unwrap_or_else(|| integer::<DEG1, DEG2, DEG4>(at_grain(&points, grain.lo_min)))
 }
 
-/// Stages 2 and 5: coordinates as integers at the finest bit `lo`, with
-/// `D`-limb differences, `M`-limb lifts and minors, an `R`-limb result.
-/// Stage 2: `<1, 2, 4>` (see `SMALL_SPAN`). Stage 5: `<34, 67, 133>`:
-/// differences below `2^2099`, lifts and minors below `2^4199`, the
-/// determinant below `3 * 2^8398 < 2^8400`.
-fn integer<const D: usize, const M: usize, const R: usize>(p: &[DVec2; 4], lo: i32) -> Sign {
-    let int = |v: DVec2| {
+/// Point `i`'s coordinates as integers in units of `2^lo`, for `integer`.
+fn at_grain<const D: usize>(p: &[DVec2; 4], lo: i32) -> impl Fn(usize) -> [FixedInt<D>; 2] {
+    move |i| {
         [
-            FixedInt::<D>::from_f64(v.x, lo),
-            FixedInt::from_f64(v.y, lo),
+            FixedInt::from_f64(p[i].x, lo),
+            FixedInt::from_f64(p[i].y, lo),
         ]
-    };
-    let d = int(p[3]);
-    let rel = |v: DVec2| {
-        let q = int(v);
+    }
+}
+
+/// Stages 2 and 5: point `i`'s coordinates as integers `int(i)` (all at
+/// one scale), with `D`-limb differences, `M`-limb lifts and minors, an
+/// `R`-limb result. Stage 2: `<1, 2, 4>` (see `SMALL_SPAN`). Stage 5:
+/// `<34, 67, 133>`: differences below `2^2099`, lifts and minors below
+/// `2^4199`, the determinant below `3 * 2^8398 < 2^8400`.
+fn integer<const D: usize, const M: usize, const R: usize>(
+    int: impl Fn(usize) -> [FixedInt<D>; 2],
+) -> Sign {
+    let d = int(3);
+    let rel = |i: usize| {
+        let q = int(i);
         [q[0].sub(&d[0]), q[1].sub(&d[1])]
     };
-    let (a, b, c) = (rel(p[0]), rel(p[1]), rel(p[2]));
+    let (a, b, c) = (rel(0), rel(1), rel(2));
     let lift =
         |u: &[FixedInt<D>; 2]| FixedInt::<M>::mul(&u[0], &u[0]).add(&FixedInt::mul(&u[1], &u[1]));
     let minor = |u: &[FixedInt<D>; 2], v: &[FixedInt<D>; 2]| {
@@ -166,4 +210,72 @@ fn integer<const D: usize, const M: usize, const R: usize>(p: &[DVec2; 4], lo: i
         .add(&FixedInt::mul(&lift(&b), &minor(&c, &a)))
         .add(&FixedInt::mul(&lift(&c), &minor(&a, &b)));
     det.sign()
+}
+
+/// The big-integer stage alone, exact for every finite input: the
+/// reference the other stages' tests compare with.
+#[cfg(test)]
+pub(super) fn dense(p: [DVec2; 4]) -> Sign {
+    let grain = Grain::of(&p.map(|v| [v.x, v.y]).concat());
+    if grain.all_zero() {
+        return Sign::Zero;
+    }
+    integer::<DEG1, DEG2, DEG4>(at_grain(&p, grain.lo_min))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{InputClass, SplitMix64, incircle_case, step_ulps};
+
+    /// Cocircular lattice points (`3^2 + 4^2 = 5^2` and its symmetries,
+    /// around a lattice centre), scaled by `2^k` over the whole exponent
+    /// range, and the same with one coordinate moved by one lattice step or
+    /// one ulp: zeros the lattice stage must certify, and non-zeros it must
+    /// leave alone.
+    #[test]
+    fn lattice_zeros_and_their_neighbours() {
+        let on = [
+            (5, 0),
+            (3, 4),
+            (0, 5),
+            (-4, 3),
+            (-5, 0),
+            (-3, -4),
+            (4, -3),
+            (0, -5),
+        ];
+        let mut rng = SplitMix64::new(17);
+        let (mut zeros, mut cases) = (0, 0);
+        for i in 0..20_000 {
+            let centre = [rng.next_u64() % 64, rng.next_u64() % 64].map(|c| c as f64 - 32.0);
+            let mut p = [(); 4].map(|_| {
+                let (x, y) = on[(rng.next_u64() % 8) as usize];
+                DVec2::new(centre[0] + x as f64, centre[1] + y as f64)
+            });
+            let k = (rng.next_u64() % 2000) as i32 - 1000;
+            let scale = |v: f64| v * pow2(k / 2) * pow2(k - k / 2);
+            p = p.map(|v| DVec2::new(scale(v.x), scale(v.y)));
+            let (j, c) = ((rng.next_u64() % 4) as usize, (rng.next_u64() % 2) as usize);
+            match i % 3 {
+                1 => p[j][c] += scale(1.0),
+                2 => p[j][c] = step_ulps(p[j][c], 1),
+                _ => {}
+            }
+            let exact = dense(p);
+            assert_eq!(incircle(p[0], p[1], p[2], p[3]), exact, "{p:?}");
+            zeros += (exact == Sign::Zero) as u32;
+            cases += 1;
+        }
+        assert!(zeros > cases / 4, "{zeros} of {cases}");
+    }
+
+    #[test]
+    fn every_class_matches_dense_integers() {
+        let mut rng = SplitMix64::new(5);
+        for i in 0..30_000 {
+            let p = incircle_case(InputClass::ALL[i % 6], &mut rng);
+            assert_eq!(incircle(p[0], p[1], p[2], p[3]), dense(p), "{p:?}");
+        }
+    }
 }

@@ -6,8 +6,13 @@
 //! Stage ladder (see the [module docs](super)): filtered, small-integer
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
-use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, unit_scale};
+use crate::arith::exponent::{
+    Grain, SmallInteger, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2,
+    small_integer, unit_scale,
+};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
+use crate::arith::lanes::Pair;
+use crate::arith::magnitude::{all_within, larger, largest_abs, zero_or_at_least};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -46,36 +51,150 @@ const ADAPTIVE_SPAN: i32 = 180;
 /// of them: `9216 * 2^-1073 < 2^-1059`. `2^-1050` leaves a factor over 300.
 const SCALED_SLACK: f64 = 16777216.0 * TINY;
 
+/// Factor of the semi-static bound, `24 A (1 + 2^-40)` (see
+/// `semi_static`).
+const SEMI_STATIC: f64 = 24.0 * A * (1.0 + 1.0 / (1u64 << 40) as f64);
+
+/// Range of the per-axis largest differences within which the semi-static
+/// filter runs: `[2^-190, 2^190]` (see `semi_static`).
+const SEMI_STATIC_MIN: f64 = pow2(-190);
+const SEMI_STATIC_MAX: f64 = pow2(190);
+
 #[inline(always)]
 pub(super) fn insphere(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> Sign {
-    match filtered(&[a, b, c, d, e], None) {
+    match semi_static(a, b, c, d, e) {
         Ok(s) => s,
-        Err(permanent) => exact(a, b, c, d, e, in_range(permanent)),
+        Err(semi) => declined(&[a, b, c, d, e], semi),
     }
 }
 
-/// Stage 1 (and 4, on scaled input with `Some(slack)`): Shewchuk's stage A
-/// determinant, certified by a forward error bound. With `None`, the
-/// difference guard makes the bound hold under underflow instead.
-#[inline(always)]
-fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
-    let e = p[4];
-    let (ae, be, ce, de) = (p[0] - e, p[1] - e, p[2] - e, p[3] - e);
-    let slack = match scaled_slack {
-        None => {
-            let m = ae
-                .abs()
-                .min(be.abs())
-                .min(ce.abs())
-                .min(de.abs())
-                .min_element();
-            if m < GUARD_MIN_DIFF || m.is_nan() {
-                return Err(f64::NAN);
-            }
-            0.0
+/// Stages 1 to 5 for an input the semi-static filter declined. A computed
+/// determinant of exactly zero (in range) goes straight to the exact
+/// stages, with the semi-static bound: stage 1 could not certify it
+/// either.
+#[inline(never)]
+fn declined(p: &[DVec3; 5], semi: Option<(f64, Declined)>) -> Sign {
+    if let Some((det, semi)) = semi
+        && det == 0.0
+    {
+        // The lattice stage as in `small_integer`, with the finest bit of
+        // the coordinates found directly: the determinant (degree 5) is a
+        // multiple of `2^(5 lo)`, and the semi-static bound held.
+        let coords = p.map(|v| v.to_array());
+        let lo = lowest_bit(coords.as_flattened());
+        if below_lattice(semi.bound, lo.saturating_mul(5)) {
+            return Sign::Zero;
         }
-        Some(s) => s,
+        return exact(p[0], p[1], p[2], p[3], p[4], semi);
+    }
+    match filtered(p, None) {
+        Ok(s) => s,
+        Err(declined) => exact(p[0], p[1], p[2], p[3], p[4], declined),
+    }
+}
+
+/// Stage 0, the semi-static filter: Shewchuk's stage A determinant with a
+/// bound from the largest difference on each axis, `X`, `Y`, `Z`, rather
+/// than from the permanent: fewer operations, a slightly larger bound.
+/// When it cannot certify the sign: `Err(Some((det, declined)))` in range
+/// (`declined` with the bound below and, as the permanent, the bound on it
+/// `24 X Y Z S`), `Err(None)` out of range.
+///
+/// Bound. With `S = X^2 + Y^2 + Z^2`, each lift is at most `S`, each 2x2
+/// permanent `|x y'| + |x' y|` at most `2 X Y`, each 3x3 permanent at most
+/// `3 Z 2 X Y`, so the permanent of stage 1 (four lifts times 3x3
+/// permanents) is at most `24 X Y Z S` exactly, and as computed at most
+/// `(1 + gamma(12))` times that. Stage 1's bound, `A` times the permanent,
+/// is then at most `24 A (1 + gamma(12)) X Y Z S`; `SEMI_STATIC`'s `2^-40`
+/// covers `gamma(12)`, the seven roundings of `fl(SEMI_STATIC X Y Z S)`
+/// and the underflow below, many times over.
+///
+/// Range. With every per-axis largest difference in `[2^-190, 2^190]`
+/// nothing overflows (every term is below `24 * 2^950`), and a product
+/// that underflows is off by `2^-1075` absolutely; carried to the
+/// determinant by the factors after it (at most `Z S`, `S`, `6 X Y Z` or
+/// 1), the worst, a final product's, is below `2^-78` of `24 A X Y Z S >=
+/// 2^-44 * 2^-950`, the others far smaller, and fewer than 64 of them sum
+/// below `2^-70` of the bound.
+#[inline(always)]
+fn semi_static(
+    a: DVec3,
+    b: DVec3,
+    c: DVec3,
+    d: DVec3,
+    e: DVec3,
+) -> Result<Sign, Option<(f64, Declined)>> {
+    let rows = row_pairs(a - e, b - e, c - e, d - e);
+    // The per-axis largest difference, `X`, `Y` and `Z`.
+    let largest = |ac: Pair, bd: Pair| {
+        let m = ac.abs().larger(bd.abs());
+        larger(m.lo(), m.hi())
     };
+    let m = DVec3::new(
+        largest(rows[0], rows[1]),
+        largest(rows[2], rows[3]),
+        largest(rows[4], rows[5]),
+    );
+    let in_range = all_within(m, SEMI_STATIC_MIN, SEMI_STATIC_MAX);
+    let det = lifted_det(rows);
+    let permanent = (m.x * m.y * m.z) * m.length_squared();
+    let bound = SEMI_STATIC * permanent;
+    if !in_range {
+        Err(None)
+    } else if det > bound {
+        Ok(Sign::Negative)
+    } else if -det > bound {
+        Ok(Sign::Positive)
+    } else {
+        let permanent = 24.0 * permanent;
+        Err(Some((det, Declined { permanent, bound })))
+    }
+}
+
+/// The rows `ae`, `be`, `ce`, `de` (each point minus `e`) as pairs: the x
+/// of `ae` and `ce`, the x of `be` and `de`, then the same for y and z.
+#[inline(always)]
+fn row_pairs(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> [Pair; 6] {
+    [
+        Pair::new(ae.x, ce.x),
+        Pair::new(be.x, de.x),
+        Pair::new(ae.y, ce.y),
+        Pair::new(be.y, de.y),
+        Pair::new(ae.z, ce.z),
+        Pair::new(be.z, de.z),
+    ]
+}
+
+/// Shewchuk's stage A in-sphere determinant of the rows (as `row_pairs`),
+/// expanded along the lift column, positive for "inside" under his
+/// orientation convention, the opposite of ours; two lanes at a time (rows
+/// `a`, `c` in one lane and `b`, `d` in the other, so SSE2 does two
+/// operations in one), with the same operations on the same operands in
+/// the same order as the scalar formula (`lifted_det_scalar`), so the same
+/// value and the same error bound.
+#[inline(always)]
+fn lifted_det([xac, xbd, yac, ybd, zac, zbd]: [Pair; 6]) -> f64 {
+    // [ab, cd], [bc, da], [ac, bd].
+    let ab_cd = xac * ybd - xbd * yac;
+    let bc_da = xbd * yac.swap() - xac.swap() * ybd;
+    let ac_bd = xac.lows(xbd) * yac.highs(ybd) - xac.highs(xbd) * yac.lows(ybd);
+    // [abc, cda] and [bcd, dab]; `[-ac, ac]` and `[-bd, bd]`.
+    let (ac, bd) = (ac_bd.lo(), ac_bd.hi());
+    let abc_cda = zac * bc_da + zbd * Pair::new(-ac, ac) + zac.swap() * ab_cd;
+    let bcd_dab = zbd * ab_cd.swap() + zac.swap() * Pair::new(-bd, bd) + zbd.swap() * bc_da;
+    // [al, cl] and [bl, dl].
+    let (l_ac, l_bd) = (
+        xac * xac + yac * yac + zac * zac,
+        xbd * xbd + ybd * ybd + zbd * zbd,
+    );
+    // [dl abc - cl dab, bl cda - al bcd].
+    let t = l_bd.swap() * abc_cda - l_ac.swap() * bcd_dab.swap();
+    t.lo() + t.hi()
+}
+
+/// Shewchuk's formula for [`lifted_det`], one operation at a time.
+#[cfg(test)]
+fn lifted_det_scalar(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> f64 {
     let ab = ae.x * be.y - be.x * ae.y;
     let bc = be.x * ce.y - ce.x * be.y;
     let cd = ce.x * de.y - de.x * ce.y;
@@ -92,8 +211,52 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
         ce.length_squared(),
         de.length_squared(),
     );
-    let det = (dl * abc - cl * dab) + (bl * cda - al * bcd);
+    (dl * abc - cl * dab) + (bl * cda - al * bcd)
+}
 
+/// What a filter that declined computed: its permanent and its error bound
+/// `A * permanent + slack`, both NaN when the difference guard declined.
+#[derive(Clone, Copy)]
+struct Declined {
+    permanent: f64,
+    bound: f64,
+}
+
+/// Stage 1 (and 4, on scaled input with `Some(slack)`): Shewchuk's stage A
+/// determinant, certified by a forward error bound. With `None`, the
+/// difference guard makes the bound hold under underflow instead.
+#[inline(always)]
+fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined> {
+    let e = p[4];
+    let (ae, be, ce, de) = (p[0] - e, p[1] - e, p[2] - e, p[3] - e);
+    let slack = match scaled_slack {
+        None => {
+            let m = ae
+                .abs()
+                .min(be.abs())
+                .min(ce.abs())
+                .min(de.abs())
+                .min_element();
+            let diffs = [ae, be, ce, de].map(|v| v.to_array());
+            if (m < GUARD_MIN_DIFF || m.is_nan())
+                && !zero_or_at_least(diffs.as_flattened(), GUARD_MIN_DIFF)
+            {
+                return Err(Declined {
+                    permanent: f64::NAN,
+                    bound: f64::NAN,
+                });
+            }
+            0.0
+        }
+        Some(s) => s,
+    };
+    let det = lifted_det(row_pairs(ae, be, ce, de));
+    let (al, bl, cl, dl) = (
+        ae.length_squared(),
+        be.length_squared(),
+        ce.length_squared(),
+        de.length_squared(),
+    );
     let pm = |u: DVec3, v: DVec3| (u.x * v.y).abs() + (v.x * u.y).abs();
     let (abp, bcp, cdp, dap, acp, bdp) = (
         pm(ae, be),
@@ -116,34 +279,57 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, f64> {
     } else if -det > bound {
         Ok(Sign::Positive)
     } else {
-        Err(permanent)
+        Err(Declined { permanent, bound })
     }
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Sign {
+fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> Sign {
     let points = [a, b, c, d, e];
+    let in_range = in_range(stage1.permanent);
+    let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
+    let max = largest_abs(&coords);
+    let scaled = || {
+        let k = unit_scale(&[max]);
+        points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)))
+    };
+    // Stage 2, and the lattice stage (`small_integer`), which needs stage
+    // 1's bound: where that is NaN (its difference guard declined: tiny
+    // inputs) or infinite, the scaled filter comes first.
+    let small = stage1
+        .bound
+        .is_finite()
+        .then(|| small_integer(&coords, max, SMALL_SPAN, 5, stage1.bound));
+    if let Some(SmallInteger::Zero) = small {
+        return Sign::Zero;
+    }
+    // (Non-finite input is never `SmallInteger::Zero`.)
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
-    let coords: [f64; 15] = core::array::from_fn(|i| points[i / 3][i % 3]);
-    let scaled = || {
-        let k = unit_scale(&coords);
-        points.map(|p| DVec3::new(scale_pow2(p.x, k), scale_pow2(p.y, k), scale_pow2(p.z, k)))
-    };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
     let scaled_filter = |s: [DVec3; 5]| filtered(&s, Some(SCALED_SLACK)).ok();
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
+    let small = small.unwrap_or_else(|| small_integer(&coords, max, SMALL_SPAN, 5, f64::NAN));
+    if let SmallInteger::Zero = small {
+        return Sign::Zero;
+    }
+    if let SmallInteger::Integers(ints) = small {
+        return integer::<1, 2, 3, 5>(|i| {
+            [
+                FixedInt::from_i64(ints[3 * i]),
+                FixedInt::from_i64(ints[3 * i + 1]),
+                FixedInt::from_i64(ints[3 * i + 2]),
+            ]
+        });
+    }
     let grain = Grain::of(&coords);
     if grain.all_zero() {
         return Sign::Zero;
-    }
-    if grain.span() <= SMALL_SPAN {
-        return integer::<1, 2, 3, 5>(&points, grain.lo_min);
     }
     let s = scaled();
     if grain.span() <= ADAPTIVE_SPAN {
@@ -163,26 +349,36 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, in_range: bool) -> Si
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    integer::<DEG1, DEG2, DEG3, DEG5>(&points, grain.lo_min)
+    super::sparse::insphere(points)
+        .unwrap_or_else(|| integer::<DEG1, DEG2, DEG3, DEG5>(at_grain(&points, grain.lo_min)))
 }
 
-/// Stages 2 and 5: coordinates as integers at the finest bit `lo`, with
-/// `D`-limb differences, `M`-limb 2x2 minors and lifts, `T`-limb 3x3
-/// minors, an `R`-limb result. Stage 2: `<1, 2, 3, 5>` (see `SMALL_SPAN`).
-/// Stage 5: `<34, 67, 100, 166>`: differences below `2^2099`, 2x2 minors
-/// and lifts below `2^4200`, 3x3 minors below `2^6300`, the determinant
-/// below `2^10502`.
+/// Point `i`'s coordinates as integers in units of `2^lo`, for `integer`.
+fn at_grain<const D: usize>(p: &[DVec3; 5], lo: i32) -> impl Fn(usize) -> [FixedInt<D>; 3] {
+    move |i| {
+        [
+            FixedInt::from_f64(p[i].x, lo),
+            FixedInt::from_f64(p[i].y, lo),
+            FixedInt::from_f64(p[i].z, lo),
+        ]
+    }
+}
+
+/// Stages 2 and 5: point `i`'s coordinates as integers `int(i)` (all at
+/// one scale), with `D`-limb differences, `M`-limb 2x2 minors and lifts,
+/// `T`-limb 3x3 minors, an `R`-limb result. Stage 2: `<1, 2, 3, 5>` (see
+/// `SMALL_SPAN`). Stage 5: `<34, 67, 100, 166>`: differences below
+/// `2^2099`, 2x2 minors and lifts below `2^4200`, 3x3 minors below
+/// `2^6300`, the determinant below `2^10502`.
 fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
-    p: &[DVec3; 5],
-    lo: i32,
+    int: impl Fn(usize) -> [FixedInt<D>; 3],
 ) -> Sign {
-    let int = |v: DVec3| [v.x, v.y, v.z].map(|x| FixedInt::<D>::from_f64(x, lo));
-    let e = int(p[4]);
-    let rel = |v: DVec3| {
-        let q = int(v);
+    let e = int(4);
+    let rel = |i: usize| {
+        let q = int(i);
         [q[0].sub(&e[0]), q[1].sub(&e[1]), q[2].sub(&e[2])]
     };
-    let r = [rel(p[0]), rel(p[1]), rel(p[2]), rel(p[3])];
+    let r = [rel(0), rel(1), rel(2), rel(3)];
     let m2 = |i: usize, j: usize| {
         FixedInt::<M>::mul(&r[i][0], &r[j][1]).sub(&FixedInt::mul(&r[j][0], &r[i][1]))
     };
@@ -203,4 +399,106 @@ fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
         .sub(&FixedInt::mul(&lift(0), &m3(1, 2, 3)))
         .sub(&FixedInt::mul(&lift(2), &m3(0, 1, 3)));
     -det.sign()
+}
+
+/// The big-integer stage alone, exact for every finite input: the
+/// reference the other stages' tests compare with.
+#[cfg(test)]
+pub(super) fn dense(p: [DVec3; 5]) -> Sign {
+    let grain = Grain::of(&p.map(|v| v.to_array()).concat());
+    if grain.all_zero() {
+        return Sign::Zero;
+    }
+    integer::<DEG1, DEG2, DEG3, DEG5>(at_grain(&p, grain.lo_min))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{InputClass, SplitMix64, insphere_case, step_ulps};
+
+    /// Cospherical lattice points (`2^2 + 3^2 + 6^2 = 7^2` and its
+    /// permutations and signs, around a lattice centre), scaled by `2^k`
+    /// over the whole exponent range, and the same with one coordinate
+    /// moved by one lattice step or one ulp: zeros the lattice stage must
+    /// certify, and non-zeros it must leave alone.
+    #[test]
+    fn lattice_zeros_and_their_neighbours() {
+        let mut rng = SplitMix64::new(23);
+        let (mut zeros, mut cases) = (0, 0);
+        for i in 0..10_000 {
+            let centre: [f64; 3] = core::array::from_fn(|_| (rng.next_u64() % 64) as f64 - 32.0);
+            let mut p = [(); 5].map(|_| {
+                let mut v =
+                    [2.0, 3.0, 6.0, 7.0].map(|x| if rng.next_u64() & 1 == 0 { x } else { -x });
+                // A point on the sphere of radius 7: a permutation of
+                // (2, 3, 6), or (7, 0, 0).
+                let r = (rng.next_u64() % 4) as usize;
+                let w = if r == 3 {
+                    [v[3], 0.0, 0.0]
+                } else {
+                    [v[0], v[1], v[2]]
+                };
+                v = [w[r % 3], w[(r + 1) % 3], w[(r + 2) % 3], 0.0];
+                DVec3::new(centre[0] + v[0], centre[1] + v[1], centre[2] + v[2])
+            });
+            let k = (rng.next_u64() % 1600) as i32 - 800;
+            let scale = |v: f64| v * pow2(k / 2) * pow2(k - k / 2);
+            p = p.map(|v| DVec3::new(scale(v.x), scale(v.y), scale(v.z)));
+            let (j, c) = ((rng.next_u64() % 5) as usize, (rng.next_u64() % 3) as usize);
+            match i % 3 {
+                1 => p[j][c] += scale(1.0),
+                2 => p[j][c] = step_ulps(p[j][c], 1),
+                _ => {}
+            }
+            let exact = dense(p);
+            assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), exact, "{p:?}");
+            zeros += (exact == Sign::Zero) as u32;
+            cases += 1;
+        }
+        assert!(zeros > cases / 4, "{zeros} of {cases}");
+    }
+
+    /// The paired determinant is the scalar formula's, to the bit.
+    #[test]
+    fn paired_determinant_is_the_scalar_one() {
+        let mut rng = SplitMix64::new(8);
+        for i in 0..60_000 {
+            let [a, b, c, d, e] = insphere_case(InputClass::ALL[i % 6], &mut rng);
+            let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
+            let paired = lifted_det(row_pairs(ae, be, ce, de));
+            let scalar = lifted_det_scalar(ae, be, ce, de);
+            // (NaN where something overflowed, its sign bit unspecified.)
+            let same = paired.to_bits() == scalar.to_bits() || paired.is_nan() && scalar.is_nan();
+            assert!(same, "{paired} {scalar}: {a} {b} {c} {d} {e}");
+        }
+    }
+
+    #[test]
+    fn every_class_matches_dense_integers() {
+        let mut rng = SplitMix64::new(6);
+        for i in 0..6_000 {
+            let p = insphere_case(InputClass::ALL[i % 6], &mut rng);
+            assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), dense(p), "{p:?}");
+        }
+    }
+
+    /// Inputs whose per-axis largest differences sit at the edges of the
+    /// semi-static filter's range (`2^-190`, `2^190`), some with a
+    /// coordinate so small that its products underflow, against the dense
+    /// integers.
+    #[test]
+    fn semi_static_range_edges() {
+        let mut rng = SplitMix64::new(43);
+        for i in 0..6_000 {
+            let mut p = insphere_case(InputClass::ALL[i % 3], &mut rng);
+            let e = if i % 2 == 0 { -191 } else { 188 } + (rng.next_u64() % 4) as i32;
+            p = p.map(|v| DVec3::new(scale_pow2(v.x, e), scale_pow2(v.y, e), scale_pow2(v.z, e)));
+            if i % 5 == 0 {
+                let (j, k) = ((rng.next_u64() % 5) as usize, (rng.next_u64() % 3) as usize);
+                p[j][k] = scale_pow2(p[j][k], -700);
+            }
+            assert_eq!(insphere(p[0], p[1], p[2], p[3], p[4]), dense(p), "{p:?}");
+        }
+    }
 }

@@ -49,19 +49,27 @@
 //!    multiple of a common power of two that leaves it 62 bits or fewer, the
 //!    determinant is evaluated exactly in 64/128/256/320-bit integers.
 //!    Answers degenerate and near-degenerate inputs, and tiny or huge ones.
+//!    For incircle and insphere the **lattice** stage comes first: the
+//!    determinant is then a multiple of `2^(degree * lo)`, `2^lo` that
+//!    power of two, and when stage 1's error bound lies below that step,
+//!    the value stage 1 could not tell from zero is zero. Answers exactly
+//!    degenerate inputs with short significands at the cost of stage 1 and
+//!    a pass over the coordinates.
 //! 4. **adaptive**: Shewchuk's adaptive stages (the `robust` crate) on inputs
 //!    scaled by a power of two, only when the exponent spread proves that no
 //!    step of that arithmetic underflows or overflows.
 //! 5. **scaled filter** again, when stage 1 declined on precision rather
 //!    than range and stages 3 and 4 could not run.
 //! 6. **big-integer exact**: always exact, used only when every other stage
-//!    declined. orient2d and orient3d first try sparse exact terms: each
-//!    coordinate difference as at most two `f64` significands with explicit
-//!    exponents, the determinant as at most 48 exact products, its sign from
-//!    the top cluster of terms that does not cancel. Otherwise (and for
-//!    incircle and insphere) fixed-capacity integers on the stack (no
-//!    allocation) hold every coordinate at the finest common binary
-//!    exponent; their products skip zero limbs.
+//!    declined. First sparse exact terms: each coordinate difference as at
+//!    most two `f64` significands with explicit exponents (or, for incircle
+//!    and insphere when that makes fewer terms, the coordinates themselves),
+//!    the determinant as exact products of them (at most 48 for orient2d,
+//!    orient3d and incircle, 360 for insphere), summed from the largest
+//!    down until the rest cannot change the sign. Where they do not fit,
+//!    fixed-capacity integers on the stack (no allocation) hold every
+//!    coordinate at the finest common binary exponent; their products skip
+//!    zero limbs.
 //!
 //! # Many cases at once
 //! [`orient2d_many`] and [`orient3d_many`] are the way to evaluate many
@@ -178,7 +186,7 @@ pub fn try_orient2d(
 /// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z), Sign::Positive);
 /// assert_eq!(orient3d(DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(0.3, 0.7, 0.0)), Sign::Zero);
 /// ```
-#[inline]
+#[inline(always)]
 pub fn orient3d(
     a: impl IntoDVec3,
     b: impl IntoDVec3,

@@ -5,9 +5,12 @@
 //! exact, adaptive (`robust`), scaled filter, big-integer exact.
 
 use super::sparse;
-use crate::arith::exponent::{Grain, TINY, in_range, pow2, scale_pow2, to_integer_i64, unit_scale};
+use crate::arith::exponent::{
+    Grain, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2, unit_integers, unit_scale,
+};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
+use crate::arith::magnitude::{all_within, larger, larger3};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -49,12 +52,138 @@ const SCALED_SLACK: f64 = 1024.0 * TINY;
 /// operands are normal numbers (see `filtered`).
 const LIFT: f64 = pow2(1000);
 
+/// Factor of the semi-static bound, `6 A (1 + 2^-40)` (see `semi_static`).
+const SEMI_STATIC: f64 = 6.0 * A * (1.0 + 1.0 / (1u64 << 40) as f64);
+
+/// Range of the per-axis largest differences within which the semi-static
+/// filter runs: `[2^-290, 2^290]` (see `semi_static`).
+const SEMI_STATIC_MIN: f64 = pow2(-290);
+const SEMI_STATIC_MAX: f64 = pow2(290);
+
 #[inline(always)]
 pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
-    match filtered(a, b, c, d, 0.0) {
+    match semi_static(a, b, c, d) {
         Ok(s) => s,
-        Err(permanent) => exact(a, b, c, d, in_range(permanent)),
+        Err(semi) => semi_declined(a.to_array(), b.to_array(), c.to_array(), d.to_array(), semi),
     }
+}
+
+/// Stages 1 to 5 for an input the semi-static filter declined: a computed
+/// determinant of exactly zero (in range), which stage 1 cannot certify
+/// either, goes straight to the exact stages.
+#[inline(never)]
+fn semi_declined(
+    a: [f64; 3],
+    b: [f64; 3],
+    c: [f64; 3],
+    d: [f64; 3],
+    semi: Option<[f64; 3]>,
+) -> Sign {
+    let [a, b, c, d] = [a, b, c, d].map(DVec3::from_array);
+    let permanent = match semi {
+        Some([0.0, permanent, bound]) => {
+            // The lattice stage: every term of the determinant is a
+            // product of one difference per axis, each a multiple of that
+            // axis's finest bit, so the determinant is a multiple of
+            // `2^lattice`; the semi-static bound held (in range), and one
+            // below a lattice step proves the zero (`below_lattice`).
+            let lattice = [
+                [a.x, b.x, c.x, d.x],
+                [a.y, b.y, c.y, d.y],
+                [a.z, b.z, c.z, d.z],
+            ]
+            .iter()
+            .fold(0i32, |l, axis| l.saturating_add(lowest_bit(axis)));
+            if below_lattice(bound, lattice) {
+                return Sign::Zero;
+            }
+            permanent
+        }
+        _ => match filtered(a, b, c, d, 0.0) {
+            Ok(s) => return s,
+            Err(permanent) => permanent,
+        },
+    };
+    stages_2_to_5(a, b, c, d, permanent)
+}
+
+/// Stages 2 to 5 for an input stage 1 declined, given its permanent (the
+/// batch variant's entry for lanes whose determinant is not zero).
+#[inline(never)]
+pub(super) fn declined(p: &[DVec3; 4], permanent: f64) -> Sign {
+    if in_range(permanent)
+        && let Some(sign) = unit_integer(p)
+    {
+        return sign;
+    }
+    exact(p, in_range(permanent))
+}
+
+/// The whole ladder, out of line (the batch variant's entry for lanes whose
+/// determinant stage 1 computed as zero: the lattice stage takes those).
+#[inline(never)]
+pub(super) fn from_the_start(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
+    orient3d(a, b, c, d)
+}
+
+/// The quick integer entry (`unit_integer`), which answers almost every
+/// in-range input that reaches it, then the cold ladder.
+#[inline(always)]
+fn stages_2_to_5(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
+    let p = [a, b, c, d];
+    if in_range(permanent)
+        && let Some(sign) = unit_integer(&p)
+    {
+        return sign;
+    }
+    exact(&p, in_range(permanent))
+}
+
+/// Stage 0, the semi-static filter: stage 1's determinant with a bound
+/// from the largest difference on each axis, `X`, `Y`, `Z`, rather than
+/// from the permanent. When it cannot certify the sign: `Err(Some([det,
+/// 6 X Y Z, bound]))` in range, `Err(None)` out of range.
+///
+/// Bound. Each 2x2 permanent `|x y'| + |x' y|` is at most `2 X Y`, so the
+/// permanent of stage 1 is at most `3 Z 2 X Y = 6 X Y Z` exactly, and as
+/// computed at most `(1 + gamma(6))` times that; stage 1's bound `A` times
+/// it is at most `6 A (1 + gamma(6)) X Y Z`. `SEMI_STATIC`'s `2^-40`
+/// covers `gamma(6)`, the three roundings of `fl(SEMI_STATIC X Y Z)` and
+/// the underflow below many times over.
+///
+/// Range. With every per-axis largest difference in `[2^-290, 2^290]`
+/// nothing overflows (terms below `2^871`), `6 X Y Z` lies in `[2^-870,
+/// 2^873]` (within `in_range`), and a product that underflows is off by
+/// `2^-1075` absolutely: a minor's, times a `z` of at most `Z`, is below
+/// `2^-400` of the bound, a final one below `2^-150` of it (the bound is
+/// at least `2^-48 * 2^-870`).
+#[inline(always)]
+fn semi_static(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Result<Sign, Option<[f64; 3]>> {
+    let [a, b, c, d] = [a, b, c, d].map(|p| p.to_array());
+    let rel = |p: [f64; 3]| DVec3::new(p[0] - a[0], p[1] - a[1], p[2] - a[2]);
+    let (bb, cc, dd) = (rel(b), rel(c), rel(d));
+    let m = larger3(larger3(bb.abs(), cc.abs()), dd.abs());
+    let in_range = all_within(m, SEMI_STATIC_MIN, SEMI_STATIC_MAX);
+    let det = determinant(bb.to_array(), cc.to_array(), dd.to_array());
+    let permanent = m.x * m.y * m.z;
+    let bound = SEMI_STATIC * permanent;
+    if !in_range {
+        Err(None)
+    } else if det > bound {
+        Ok(Sign::Positive)
+    } else if -det > bound {
+        Ok(Sign::Negative)
+    } else {
+        Err(Some([det, 6.0 * permanent, bound]))
+    }
+}
+
+/// Stage 1's determinant of the rows `bb`, `cc`, `dd`, expanded along z.
+#[inline(always)]
+fn determinant<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> T {
+    bb[2] * (cc[0] * dd[1] - dd[0] * cc[1])
+        + cc[2] * (dd[0] * bb[1] - bb[0] * dd[1])
+        + dd[2] * (bb[0] * cc[1] - cc[0] * bb[1])
 }
 
 /// Stage 1: the `f64` determinant expanded along z, certified by a forward
@@ -103,7 +232,7 @@ pub(super) fn stage_a_rows<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> (T, 
     let bxdy = bb[0] * dd[1];
     let bxcy = bb[0] * cc[1];
     let cxby = cc[0] * bb[1];
-    let det = bb[2] * (cxdy - dxcy) + cc[2] * (dxby - bxdy) + dd[2] * (bxcy - cxby);
+    let det = determinant(bb, cc, dd);
     let (bz, cz, dz) = (bb[2].abs(), cc[2].abs(), dd[2].abs());
     let permanent = (cxdy.abs() + dxcy.abs()) * bz
         + (dxby.abs() + bxdy.abs()) * cz
@@ -126,17 +255,30 @@ pub(super) fn certifies(margin: f64, zsum: f64, extra_slack: f64) -> bool {
     margin > (Z_SLACK * LIFT) * zsum + (UNDERFLOW_SLACK + extra_slack) * LIFT
 }
 
-/// Stages 2 to 5 for an input stage 1 declined, given its permanent.
+/// Stage 2: each axis as integers below `2^SMALL_SPAN` at its own scale,
+/// found without counting bits (`unit_integers`), the determinant in
+/// `small_det3`; `None` when an axis spans more bits.
 #[inline(always)]
-pub(super) fn declined(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
-    exact(a, b, c, d, in_range(permanent))
+fn unit_integer(p: &[DVec3; 4]) -> Option<Sign> {
+    let axis = |v: [f64; 4]| {
+        let max = larger(
+            larger(v[0].abs(), v[1].abs()),
+            larger(v[2].abs(), v[3].abs()),
+        );
+        unit_integers(&v, max, SMALL_SPAN)
+    };
+    let (x, _) = axis(p.map(|v| v.x))?;
+    let (y, _) = axis(p.map(|v| v.y))?;
+    let (z, _) = axis(p.map(|v| v.z))?;
+    let rel = |i: usize| [x[i] - x[0], y[i] - y[0], z[i] - z[0]];
+    Some(small_det3([rel(1), rel(2), rel(3)]))
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
 #[cold]
 #[inline(never)]
-fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
-    let points = [a, b, c, d];
+fn exact(points: &[DVec3; 4], in_range: bool) -> Sign {
+    let [a, b, c, d] = *points;
     if !points.iter().all(|p| p.is_finite()) {
         return Sign::Zero;
     }
@@ -147,17 +289,22 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
             unit_scale(&axis(1)),
             unit_scale(&axis(2)),
         ];
-        points.map(|p| {
+        let s = |p: DVec3| {
             DVec3::new(
                 scale_pow2(p.x, scale[0]),
                 scale_pow2(p.y, scale[1]),
                 scale_pow2(p.z, scale[2]),
             )
-        })
+        };
+        [s(a), s(b), s(c), s(d)]
     };
     // Tiny, huge and mixed inputs: most are far from degenerate once scaled.
     let scaled_filter = |s: [DVec3; 4]| filtered(s[0], s[1], s[2], s[3], SCALED_SLACK).ok();
     if !in_range && let Some(sign) = scaled_filter(scaled()) {
+        return sign;
+    }
+    // (In range, `declined` has tried it.)
+    if !in_range && let Some(sign) = unit_integer(points) {
         return sign;
     }
     let grains = [
@@ -169,10 +316,8 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
         return Sign::Zero;
     }
     let lo = grains.map(|g| g.lo_min);
+    // Every span is more than `SMALL_SPAN` here (`unit_integer` declined).
     let span = grains.iter().map(|g| g.span()).max().unwrap_or(0);
-    if span <= SMALL_SPAN {
-        return small_integer(&points, lo);
-    }
     let s = scaled();
     if span <= ADAPTIVE_SPAN {
         let p = |v: DVec3| robust::Coord3D {
@@ -185,25 +330,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(&points, lo))
-}
-
-/// Stage 2: each axis as integers at its finest bit, in native integers
-/// (see `SMALL_SPAN`).
-fn small_integer(p: &[DVec3; 4], lo: [i32; 3]) -> Sign {
-    let int = |v: DVec3| {
-        [
-            to_integer_i64(v.x, lo[0]),
-            to_integer_i64(v.y, lo[1]),
-            to_integer_i64(v.z, lo[2]),
-        ]
-    };
-    let a = int(p[0]);
-    let rel = |v: DVec3| {
-        let q = int(v);
-        [q[0] - a[0], q[1] - a[1], q[2] - a[2]]
-    };
-    small_det3([rel(p[1]), rel(p[2]), rel(p[3])])
+    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(points, lo))
 }
 
 /// The sign of `det[b, c, d]` for integer rows below `2^62` in magnitude:
@@ -272,4 +399,40 @@ pub(crate) fn det3_wide<const D: usize, const M: usize, const R: usize>(
     FixedInt::<R>::mul(&b[2], &minor(c, d))
         .add(&FixedInt::<R>::mul(&c[2], &minor(d, b)))
         .add(&FixedInt::<R>::mul(&d[2], &minor(b, c)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::{InputClass, SplitMix64, orient3d_case};
+
+    fn dense(p: [DVec3; 4]) -> Sign {
+        let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
+        let g = [0, 1, 2].map(|k| Grain::of(&axis(k)));
+        if g.iter().any(|g| g.all_zero()) {
+            return Sign::Zero;
+        }
+        integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
+    }
+
+    /// Inputs whose per-axis largest differences sit at the edges of the
+    /// semi-static filter's range (`2^-290`, `2^290`), some with a
+    /// coordinate so small that its products underflow, against the dense
+    /// integers.
+    #[test]
+    fn semi_static_range_edges() {
+        let mut rng = SplitMix64::new(41);
+        for i in 0..40_000 {
+            let mut p = orient3d_case(InputClass::ALL[i % 3], &mut rng);
+            for k in 0..3 {
+                let e = if i % 2 == 0 { -291 } else { 288 } + (rng.next_u64() % 4) as i32;
+                p.iter_mut().for_each(|v| v[k] = scale_pow2(v[k], e));
+            }
+            if i % 5 == 0 {
+                let (j, k) = ((rng.next_u64() % 4) as usize, (rng.next_u64() % 3) as usize);
+                p[j][k] = scale_pow2(p[j][k], -700);
+            }
+            assert_eq!(orient3d(p[0], p[1], p[2], p[3]), dense(p), "{p:?}");
+        }
+    }
 }

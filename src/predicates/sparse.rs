@@ -4,23 +4,21 @@
 //! A finite `f64` is `m * 2^e` with `|m| < 2^53`. The difference of two of
 //! them is one such term when their exponents are close, and otherwise
 //! exactly the two terms themselves (no rounding: the difference is never
-//! formed). A product of `K <= 3` differences is a sum of at most `2^K`
-//! exact products of terms, each a magnitude below `2^189` (three limbs)
-//! times a power of two. A determinant is a signed sum of such products, so
-//! its sign is the sign of a sum of at most [`MAX_TERMS`] exact terms whose
-//! exponents may lie thousands of bits apart.
+//! formed). A product of `K <= 5` differences is a sum of at most `2^K`
+//! exact products of terms, each a magnitude below `2^(63 K)` times a
+//! power of two. A determinant is a signed sum of such products, so its
+//! sign is the sign of a sum of exact terms whose exponents may lie
+//! thousands of bits apart.
 //!
-//! That sign comes from the top *cluster* of terms: sort the terms by their
-//! top bit, and gather terms from the top until the next term's top bit
-//! lies so far below the lowest bit of the gathered ones that the rest
-//! cannot reach it (see [`sign_of_sum`]). The cluster's exact sum, when not
-//! zero, decides the sign; when zero, the next cluster does. A cluster is
-//! summed in a fixed accumulator of [`ACC_LIMBS`] limbs; a wider one makes
-//! the function decline (`None`) and the caller uses its dense integers.
+//! That sign comes from the largest terms: taken from the top down, each
+//! is multiplied out only when reached and added into a running sum of a
+//! few limbs that slides down with them, until the running sum is too
+//! large for the terms left to change its sign (see [`sign_of_sum`]).
 //!
 //! For the hard mixed-magnitude inputs (a configuration near `2^1000`
-//! decided by offsets near `2^-1000`) this costs a few dozen small integer
-//! products instead of products of dense 2,000-bit integers.
+//! decided by offsets near `2^-1000`, or coordinates each at its own
+//! exponent) this costs some dozens to hundreds of small integer products
+//! instead of products of dense integers thousands of bits wide.
 
 use crate::arith::sparse_sum::{Diff, MAX_TERMS, Terms, diff, sign_of_sum};
 use crate::sign::Sign;
@@ -31,9 +29,9 @@ use glam::{DVec2, DVec3};
 pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
     let (bx, by) = (diff(b.x, a.x), diff(b.y, a.y));
     let (cx, cy) = (diff(c.x, a.x), diff(c.y, a.y));
-    let mut terms = Terms::<8>::new();
-    terms.push_product(false, [bx, cy]);
-    terms.push_product(true, [by, cx]);
+    let mut terms = Terms::<8, 2>::new();
+    terms.push_product(false, &[bx, cy]);
+    terms.push_product(true, &[by, cx]);
     sign_of_sum(&mut terms)
 }
 
@@ -54,13 +52,203 @@ pub(super) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Option<Sign>
     det3(dir, rel(p), rel(q))
 }
 
+/// The exact sign of the in-circle determinant of `p` (as
+/// `predicates::incircle`), for finite input, or `None` when its terms do
+/// not fit the accumulators.
+///
+/// `incircle` is the sign of the lifted determinant `det4` of the rows `(x,
+/// y, x^2 + y^2, 1)` (with `d` as the origin, below, this is its own
+/// formula). Two expansions, whichever has fewer terms:
+/// - `det4` is translation invariant; with point `k` as the origin its row
+///   is `(0, 0, 0, 1)`, so `det4 = (-1)^(k + 1) det3` (0-based `k`,
+///   expanded along that row), `det3` the lifted 3x3 determinant of the
+///   other points minus point `k`, in order: 12 products of 4 differences,
+///   each difference one or two terms (the `k` whose differences have the
+///   fewest two-term parts is taken);
+/// - `det4` over the coordinates themselves, one term each: 24
+///   permutations, times 2 for the lift, 48 products.
+pub(super) fn incircle(p: [DVec2; 4]) -> Option<Sign> {
+    let coords = p.map(|v| [v.x, v.y]);
+    let k = reference(&coords);
+    if product_terms(&incircle_translated(&coords, k)) <= 48 {
+        lifted_sign::<48, 4, 4>(incircle_translated(&coords, k), k % 2 == 0)
+    } else {
+        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&coords), false)
+    }
+}
+
+/// The products of `det3` with point `k` as the origin (see [`incircle`]):
+/// the lifted 3x3 determinant expanded along the lift column, `lift_u (x_v
+/// y_w - y_v x_w)` over `(u, v, w)` cyclic, `lift_u = x_u^2 + y_u^2`.
+fn incircle_translated(p: &[[f64; 2]; 4], k: usize) -> IncircleTranslated {
+    IncircleTranslated(core::array::from_fn(|i| {
+        let q = p[i + (i >= k) as usize];
+        [diff(q[0], p[k][0]), diff(q[1], p[k][1])]
+    }))
+}
+
+/// An expansion of a determinant into signed products of `K` differences.
+trait Expansion<const K: usize> {
+    /// Calls `push` with each signed product (`true`: negated).
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; K]));
+}
+
+/// The rows of [`incircle_translated`].
+struct IncircleTranslated([[Diff; 2]; 3]);
+
+impl Expansion<4> for IncircleTranslated {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; 4])) {
+        let rows = &self.0;
+        for (u, v, w) in [(0, 1, 2), (1, 2, 0), (2, 0, 1)] {
+            for c in 0..2 {
+                let (sq, v, w) = (rows[u][c], rows[v], rows[w]);
+                push(false, [sq, sq, v[0], w[1]]);
+                push(true, [sq, sq, v[1], w[0]]);
+            }
+        }
+    }
+}
+
+/// The exact sign of the in-sphere determinant of `p` (as
+/// `predicates::insphere`), for finite input, or `None` when its terms do
+/// not fit the accumulators.
+///
+/// As for [`incircle`], with `det5` the lifted determinant of the rows `(x,
+/// y, z, |.|^2, 1)`: `insphere` is minus its sign (CGAL's convention, minus
+/// Shewchuk's), and it is either `(-1)^k det4`, `det4` the lifted 4x4
+/// determinant of the other points minus point `k`, in order (72 products
+/// of 5 differences), or expanded over the coordinates (120 permutations
+/// times 3, 360 products), whichever has fewer terms.
+pub(super) fn insphere(p: [DVec3; 5]) -> Option<Sign> {
+    let coords = p.map(|v| [v.x, v.y, v.z]);
+    let k = reference(&coords);
+    let det5 = if product_terms(&insphere_translated(&coords, k)) <= 360 {
+        lifted_sign::<360, 5, 5>(insphere_translated(&coords, k), k % 2 == 1)
+    } else {
+        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&coords), false)
+    };
+    det5.map(|s| -s)
+}
+
+/// The products of `det4` with point `k` as the origin (see [`insphere`]):
+/// the lifted 4x4 determinant expanded along the lift column, the sum over
+/// rows `i` of `(-1)^(i + 1) lift_i M(i)`, `M(i)` the 3x3 determinant of
+/// the other three rows in order, each expanded along z as in `det3`.
+fn insphere_translated(p: &[[f64; 3]; 5], k: usize) -> InsphereTranslated {
+    InsphereTranslated(core::array::from_fn(|i| {
+        let q = p[i + (i >= k) as usize];
+        core::array::from_fn(|c| diff(q[c], p[k][c]))
+    }))
+}
+
+/// The rows of [`insphere_translated`].
+struct InsphereTranslated([[Diff; 3]; 4]);
+
+impl Expansion<5> for InsphereTranslated {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; 5])) {
+        let rows = &self.0;
+        for i in 0..4 {
+            let o: [usize; 3] = core::array::from_fn(|j| j + (j >= i) as usize);
+            for c in 0..3 {
+                let sq = rows[i][c];
+                for (u, v, w) in [(o[0], o[1], o[2]), (o[1], o[2], o[0]), (o[2], o[0], o[1])] {
+                    let (u, v, w) = (rows[u], rows[v], rows[w]);
+                    push(i % 2 == 0, [sq, sq, u[2], v[0], w[1]]);
+                    push(i % 2 == 1, [sq, sq, u[2], w[0], v[1]]);
+                }
+            }
+        }
+    }
+}
+
+/// The exact sign of the sum of an expansion's products, negated with
+/// `negate`; `None` when they do not fit.
+fn lifted_sign<const N: usize, const L: usize, const K: usize>(
+    expansion: impl Expansion<K>,
+    negate: bool,
+) -> Option<Sign> {
+    let mut terms = Terms::<N, L>::new();
+    expansion.products(&mut |neg, f| terms.push_product(neg, &f));
+    sign_of_sum(&mut terms).map(|s| if negate { -s } else { s })
+}
+
+/// How many terms the products of an expansion add up to.
+fn product_terms<const K: usize>(expansion: &impl Expansion<K>) -> usize {
+    let mut n = 0;
+    expansion.products(&mut |_, f| n += f.iter().map(Diff::len).product::<usize>());
+    n
+}
+
+/// The products of the determinant of the `N x N` matrix whose row `i` is
+/// `(p_i, |p_i|^2, 1)`, `p_i` a point of `D = N - 2` coordinates, over the
+/// coordinates themselves: for each permutation, `D` coordinates times one
+/// squared coordinate of the lift (`K = D + 2` factors, each the one-term
+/// "difference" `v - 0`), with the permutation's sign.
+fn lifted_monomials<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> Monomials<N, D> {
+    Monomials(p.map(|q| q.map(|x| diff(x, 0.0))))
+}
+
+/// The coordinates of [`lifted_monomials`], as one-term differences.
+struct Monomials<const N: usize, const D: usize>([[Diff; D]; N]);
+
+impl<const N: usize, const D: usize, const K: usize> Expansion<K> for Monomials<N, D> {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; K])) {
+        const { assert!(K == D + 2 && N == D + 2) };
+        let v = &self.0;
+        // `perm[c]` is the row of column `c`. Heap's algorithm: each
+        // permutation differs from the last by one swap, so the parity
+        // alternates.
+        let mut perm: [usize; N] = core::array::from_fn(|i| i);
+        let mut odd = false;
+        let mut c = [0usize; N];
+        let mut visit = |perm: &[usize; N], odd: bool| {
+            let lift = perm[D];
+            for j in 0..D {
+                let f: [Diff; K] =
+                    core::array::from_fn(|t| if t < D { v[perm[t]][t] } else { v[lift][j] });
+                push(odd, f);
+            }
+        };
+        visit(&perm, odd);
+        let mut i = 1;
+        while i < N {
+            if c[i] < i {
+                perm.swap(if i % 2 == 0 { 0 } else { c[i] }, i);
+                odd = !odd;
+                visit(&perm, odd);
+                c[i] += 1;
+                i = 1;
+            } else {
+                c[i] = 0;
+                i += 1;
+            }
+        }
+    }
+}
+
+/// The point whose coordinate differences to the others split into the
+/// fewest two-term parts (see [`diff`]): the cheapest origin.
+fn reference<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> usize {
+    let mut parts = [0usize; N];
+    for i in 0..N {
+        for j in i + 1..N {
+            let two = (0..D)
+                .filter(|&c| diff(p[i][c], p[j][c]).len() == 2)
+                .count();
+            parts[i] += two;
+            parts[j] += two;
+        }
+    }
+    (0..N).min_by_key(|&i| parts[i]).unwrap_or(N - 1)
+}
+
 /// The exact sign of `det[b, c, d]` for rows of exact differences.
 fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
-    let mut terms = Terms::<MAX_TERMS>::new();
+    let mut terms = Terms::<MAX_TERMS, 3>::new();
     // Expanded along z: z_u * (x_v y_w - x_w y_v) over (u, v, w) cyclic.
     for (u, v, w) in [(b, c, d), (c, d, b), (d, b, c)] {
-        terms.push_product(false, [u[2], v[0], w[1]]);
-        terms.push_product(true, [u[2], w[0], v[1]]);
+        terms.push_product(false, &[u[2], v[0], w[1]]);
+        terms.push_product(true, &[u[2], w[0], v[1]]);
     }
     sign_of_sum(&mut terms)
 }
@@ -71,7 +259,9 @@ mod tests {
     use super::*;
     use crate::arith::exponent::{Grain, pow2};
     use crate::arith::fixed_int::{DEG1, DEG2, DEG3};
-    use crate::testing::{InputClass, SplitMix64, orient2d_case, orient3d_case};
+    use crate::testing::{
+        InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
+    };
 
     /// A coordinate built to cancel: a few shared anchors at scattered
     /// exponents, moved by a few ulps or by a tiny offset, or zero.
@@ -94,6 +284,27 @@ mod tests {
             let e = (rng.next_u64() % 2040) as i32 - 1020;
             (rng.next_f64() + 0.5) * pow2(e)
         })
+    }
+
+    /// Test case `i` of a 2D and a 3D predicate: every third from their
+    /// input classes, the others built to cancel.
+    fn case<const M: usize, const N: usize>(
+        i: usize,
+        rng: &mut SplitMix64,
+        two: fn(InputClass, &mut SplitMix64) -> [DVec2; M],
+        three: fn(InputClass, &mut SplitMix64) -> [DVec3; N],
+    ) -> ([DVec2; M], [DVec3; N]) {
+        if i.is_multiple_of(3) {
+            let class = InputClass::ALL[i % 6];
+            (two(class, rng), three(class, rng))
+        } else {
+            let an = anchors(rng);
+            let mut c = || coord(rng, &an);
+            (
+                [(); M].map(|_| DVec2::new(c(), c())),
+                [(); N].map(|_| DVec3::new(c(), c(), c())),
+            )
+        }
     }
 
     fn dense2(p: [DVec2; 3]) -> Sign {
@@ -119,20 +330,7 @@ mod tests {
         let mut rng = SplitMix64::new(2024);
         let (mut declined, mut zero) = (0, 0);
         for i in 0..60_000 {
-            let (p2, p3) = if i % 3 == 0 {
-                let class = InputClass::ALL[i % 6];
-                (
-                    orient2d_case(class, &mut rng),
-                    orient3d_case(class, &mut rng),
-                )
-            } else {
-                let an = anchors(&mut rng);
-                let mut c = || coord(&mut rng, &an);
-                (
-                    [(); 3].map(|_| DVec2::new(c(), c())),
-                    [(); 4].map(|_| DVec3::new(c(), c(), c())),
-                )
-            };
+            let (p2, p3) = case(i, &mut rng, orient2d_case, orient3d_case);
             match orient2d(p2[0], p2[1], p2[2]) {
                 Some(s) => assert_eq!(s, dense2(p2), "{p2:?}"),
                 None => declined += 1,
@@ -148,5 +346,52 @@ mod tests {
         // The generator does reach exact cancellation.
         assert!(zero > 100, "{zero}");
         assert!(declined < 1000, "{declined}");
+    }
+
+    /// Every expansion of the lifted predicates (with each point as the
+    /// origin, and over the coordinates) against the dense integers, on
+    /// every input class and on coordinates built to cancel.
+    #[test]
+    fn lifted_matches_dense_integers() {
+        let mut rng = SplitMix64::new(99);
+        let (mut declined, mut zero) = (0, 0);
+        for i in 0..3_000 {
+            let (p2, p3) = case(i, &mut rng, incircle_case, insphere_case);
+            let exact2 = super::super::incircle::dense(p2);
+            let c2 = p2.map(|v| [v.x, v.y]);
+            let ways2: [Option<Sign>; 6] = core::array::from_fn(|k| match k {
+                0..4 => lifted_sign::<48, 4, 4>(incircle_translated(&c2, k), k % 2 == 0),
+                4 => lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&c2), false),
+                _ => incircle(p2),
+            });
+            let exact3 = super::super::insphere::dense(p3);
+            let c3 = p3.map(|v| v.to_array());
+            let ways3: [Option<Sign>; 7] = core::array::from_fn(|k| match k {
+                0..5 => {
+                    lifted_sign::<360, 5, 5>(insphere_translated(&c3, k), k % 2 == 1).map(|s| -s)
+                }
+                5 => lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&c3), false).map(|s| -s),
+                _ => insphere(p3),
+            });
+            // The expansion over the coordinates always fits, and so does
+            // the one the predicates pick; a translated one with a poor
+            // origin may not.
+            assert!(ways2[4..].iter().chain(&ways3[5..]).all(Option::is_some));
+            for s in ways2 {
+                match s {
+                    Some(s) => assert_eq!(s, exact2, "{p2:?}"),
+                    None => declined += 1,
+                }
+            }
+            for s in ways3 {
+                match s {
+                    Some(s) => assert_eq!(s, exact3, "{p3:?}"),
+                    None => declined += 1,
+                }
+            }
+            zero += (exact2 == Sign::Zero) as u32 + (exact3 == Sign::Zero) as u32;
+        }
+        assert!(zero > 200, "{zero}");
+        assert!(declined < 20_000, "{declined}");
     }
 }

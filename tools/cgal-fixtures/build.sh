@@ -6,12 +6,7 @@
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 
-if [ ! -f /usr/include/CGAL/version.h ] || ! command -v g++ >/dev/null 2>&1; then
-    sudo_cmd=""
-    [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-    $sudo_cmd apt-get update
-    $sudo_cmd apt-get install -y g++ libcgal-dev libgmp-dev libmpfr-dev
-fi
+"$here/../install-cgal.sh"
 
 mkdir -p "$here/build"
 # -frounding-math: CGAL's interval filters switch the rounding mode, which
