@@ -6,13 +6,13 @@
 
 use crate::framework::{Config, Measure, Row, median, method, note, time_methods};
 use exactray::roots::BoundedRoot;
-use std::hint::black_box;
-use std::time::{Duration, Instant};
 use exactray::testing::SplitMix64;
 use exactray_oracle::line_oracle::Quadratic;
 use exactray_oracle::line_oracle::ulps_between;
 use glam::DVec3;
 use std::fmt::Write;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 /// Draws one case of an input class.
 pub type Generate<C> = Box<dyn Fn(&mut SplitMix64) -> C>;
