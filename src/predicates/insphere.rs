@@ -170,7 +170,8 @@ fn row_pairs(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> [Pair; 6] {
 /// orientation convention, the opposite of ours; two lanes at a time (rows
 /// `a`, `c` in one lane and `b`, `d` in the other, so SSE2 does two
 /// operations in one), with the same operations on the same operands in
-/// the same order as the scalar formula (`lifted_det_scalar`), so the same
+/// the same order as Shewchuk's scalar formula (robust's order, kept in
+/// `robust_compat::insphere_first_stage`), so the same
 /// value and the same error bound.
 #[inline(always)]
 fn lifted_det([xac, xbd, yac, ybd, zac, zbd]: [Pair; 6]) -> f64 {
@@ -190,28 +191,6 @@ fn lifted_det([xac, xbd, yac, ybd, zac, zbd]: [Pair; 6]) -> f64 {
     // [dl abc - cl dab, bl cda - al bcd].
     let t = l_bd.swap() * abc_cda - l_ac.swap() * bcd_dab.swap();
     t.lo() + t.hi()
-}
-
-/// Shewchuk's formula for [`lifted_det`], one operation at a time.
-#[cfg(test)]
-fn lifted_det_scalar(ae: DVec3, be: DVec3, ce: DVec3, de: DVec3) -> f64 {
-    let ab = ae.x * be.y - be.x * ae.y;
-    let bc = be.x * ce.y - ce.x * be.y;
-    let cd = ce.x * de.y - de.x * ce.y;
-    let da = de.x * ae.y - ae.x * de.y;
-    let ac = ae.x * ce.y - ce.x * ae.y;
-    let bd = be.x * de.y - de.x * be.y;
-    let abc = ae.z * bc - be.z * ac + ce.z * ab;
-    let bcd = be.z * cd - ce.z * bd + de.z * bc;
-    let cda = ce.z * da + de.z * ac + ae.z * cd;
-    let dab = de.z * ab + ae.z * bd + be.z * da;
-    let (al, bl, cl, dl) = (
-        ae.length_squared(),
-        be.length_squared(),
-        ce.length_squared(),
-        de.length_squared(),
-    );
-    (dl * abc - cl * dab) + (bl * cda - al * bcd)
 }
 
 /// What a filter that declined computed: its permanent and its error bound
@@ -415,6 +394,7 @@ pub(super) fn dense(p: [DVec3; 5]) -> Sign {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::predicates::robust_compat::insphere_first_stage;
     use crate::testing::{InputClass, SplitMix64, insphere_case, step_ulps};
 
     /// Cospherical lattice points (`2^2 + 3^2 + 6^2 = 7^2` and its
@@ -467,7 +447,7 @@ mod tests {
             let [a, b, c, d, e] = insphere_case(InputClass::ALL[i % 6], &mut rng);
             let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
             let paired = lifted_det(row_pairs(ae, be, ce, de));
-            let scalar = lifted_det_scalar(ae, be, ce, de);
+            let scalar = insphere_first_stage(a, b, c, d, e);
             // (NaN where something overflowed, its sign bit unspecified.)
             let same = paired.to_bits() == scalar.to_bits() || paired.is_nan() && scalar.is_nan();
             assert!(same, "{paired} {scalar}: {a} {b} {c} {d} {e}");

@@ -242,7 +242,7 @@ pub fn insphere<T: Into<f64>>(
 /// filter computes the same expression today, but it is free to change its
 /// order (or its formula) for speed; this one is pinned to robust's.
 #[inline(always)]
-fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> f64 {
+pub(super) fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> f64 {
     let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
     let ab = ae.x * be.y - be.x * ae.y;
     let bc = be.x * ce.y - ce.x * be.y;
