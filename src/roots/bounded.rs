@@ -273,6 +273,21 @@ pub(crate) fn first_bounded(k: &Coeffs, range: Interval) -> Option<Option<Bounde
     }
 }
 
+/// A default-tier cast from rounded coefficients: [`first_bounded`] on
+/// `k` where it decides, else `precise()` (also where `k` is `None`, out
+/// of the filter's range): the hit or miss is then the precise tier's.
+#[inline(always)]
+pub(crate) fn first_bounded_or(
+    k: Option<Coeffs>,
+    range: Interval,
+    precise: impl FnOnce() -> Option<BoundedRoot>,
+) -> Option<BoundedRoot> {
+    match k.and_then(|k| first_bounded(&k, range)) {
+        Some(first) => first,
+        None => precise(),
+    }
+}
+
 /// Both roots, bounded and in exact order: `Some(Some([smaller, larger]))`,
 /// `Some(None)` for a certified miss of the whole line, `None` where the
 /// count is undecided.

@@ -11,7 +11,7 @@ use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
 use crate::roots::bounded::{
-    BoundedFirstIn, Place, Tier, both_bounded, first_bounded, precise, quotient_error,
+    BoundedFirstIn, Place, Tier, both_bounded, first_bounded_or, precise, quotient_error,
 };
 use crate::roots::certified::{
     AllRoots, Coeffs, ETA, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
@@ -262,13 +262,9 @@ impl RayCast for Cylinder {
     /// miss exact, `t` from the stable formula with an a-priori bound.
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        match self
-            .rounded_coeffs(ray)
-            .and_then(|k| first_bounded(&k, range))
-        {
-            Some(first) => first,
-            None => self.precise_first(ray, range),
-        }
+        first_bounded_or(self.rounded_coeffs(ray), range, || {
+            self.precise_first(ray, range)
+        })
     }
 }
 

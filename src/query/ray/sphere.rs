@@ -7,7 +7,7 @@ use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::{BoundedFirstIn, Tier, first_bounded};
+use crate::roots::bounded::{BoundedFirstIn, Tier, first_bounded_or};
 use crate::roots::certified::{AllRoots, Coeffs, Question, SMALL_SPAN, exact_roots};
 use crate::roots::radial::{circle_of, rounded_sphere};
 use crate::roots::{BoundedRoot, Roots};
@@ -158,13 +158,9 @@ impl RayCast for Sphere {
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
         // No fma here, so no FMA dispatch: inlined into the caller, without
         // the dispatch's call (which cost about a fifth of a cast).
-        match self
-            .rounded_coeffs(ray)
-            .and_then(|k| first_bounded(&k, range))
-        {
-            Some(first) => first,
-            None => self.precise_first(ray, range),
-        }
+        first_bounded_or(self.rounded_coeffs(ray), range, || {
+            self.precise_first(ray, range)
+        })
     }
 }
 
