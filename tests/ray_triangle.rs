@@ -141,6 +141,25 @@ fn scaled((o, d, v): Case, k: i32) -> Case {
     (s(o), s(d), v.map(s))
 }
 
+/// Whether scaling `c` by `2^k` is exact and keeps every value the
+/// watertight test computes from it normal: every coordinate, every
+/// difference of a vertex and the origin, and every direction coordinate
+/// is zero or, scaled, between `2^-960` and `2^1000` (the margin covers
+/// the shear's products with direction ratios down to `2^-60`).
+fn scales_normally((o, d, v): &Case, k: i32) -> bool {
+    let ok = |x: f64| {
+        let s = x.abs() * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+        x == 0.0 || (2f64.powi(-960)..=2f64.powi(1000)).contains(&s)
+    };
+    let ratios = d.abs().min_element() == 0.0
+        || d.abs().min_element() >= d.abs().max_element() * 2f64.powi(-60);
+    let values = [*o, *d]
+        .into_iter()
+        .chain(v.iter().copied())
+        .chain(v.iter().map(|p| *p - *o));
+    ratios && values.flat_map(|p| p.to_array()).all(ok)
+}
+
 /// A coordinate moved by a few ulps.
 fn nudge(x: f64, n: i64) -> f64 {
     step_ulps(x, n)
@@ -170,6 +189,35 @@ proptest! {
         check_exact(&scaled(c, k), Interval::FORWARD)?;
         check_fast(&c, Interval::FORWARD)?;
         check_fast(&scaled(c, k), Interval::FORWARD)?;
+    }
+
+    /// The watertight test answers a case scaled by `2^k` as it answers
+    /// the case itself, bit for bit (`t`, `u`, `v`), wherever the scaling
+    /// and the test's intermediate values stay normal (a subnormal rounds
+    /// on a coarser grid): at `2^±600` and beyond its products leave the
+    /// normal range and it evaluates at powers of two of its own, which
+    /// must not change an answer.
+    #[test]
+    fn watertight_answers_scaled_copies_alike(seed: u64, kind: u8, k in -1000i32..=1000) {
+        let c = case_from(seed, kind);
+        let s = scaled(c, k);
+        prop_assume!(scales_normally(&c, k));
+        let (Ok(ray), Ok(tri)) = (Ray::new(c.0, c.1), Triangle::new(c.2[0], c.2[1], c.2[2])) else {
+            return Ok(());
+        };
+        let (ray_s, tri_s) = (Ray::new(s.0, s.1).unwrap(), Triangle::new(s.2[0], s.2[1], s.2[2]).unwrap());
+        for range in [Interval::FORWARD, Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap()] {
+            let want = tri.cast_watertight(&ray, range);
+            prop_assert_eq!(tri_s.cast_watertight(&ray_s, range), want, "{:?} at 2^{}", c, k);
+            // The origin and vertices scaled, the direction not: `t` scales.
+            let ray_t = Ray::new(s.0, c.1).unwrap();
+            let got = tri_s.cast_watertight(&ray_t, range);
+            let want = want.map(|h| TriangleHit { t: h.t * 2f64.powi(k / 2) * 2f64.powi(k - k / 2), ..h });
+            prop_assert_eq!(got.map(|h| (h.u, h.v)), want.map(|h| (h.u, h.v)), "{:?} at 2^{}", c, k);
+            if let (Some(g), Some(w)) = (got, want) && w.t.abs() >= f64::MIN_POSITIVE {
+                prop_assert_eq!(g.t, w.t, "{:?} at 2^{}", c, k);
+            }
+        }
     }
 
     /// The origin moved `2^j` times farther along the ray, aimed at the
@@ -319,42 +367,56 @@ fn origins_nearly_on_the_plane() {
     assert!(found >= 20, "only {found} origins near the plane");
 }
 
-/// Rays aimed at the interior edges and vertices of a tiled height field:
+/// `2^k` as a factor, for `|k| <= 2046`.
+fn pow2(k: i32) -> f64 {
+    2f64.powi(k / 2) * 2f64.powi(k - k / 2)
+}
+
+/// Scales for the watertight tests: from where vertex coordinates are
+/// near `2^-1000` to where an origin's coordinates (up to 10 in the tiled
+/// mesh's rays) approach `f64::MAX`.
+const SCALES: [i32; 11] = [0, -1000, -800, -600, -400, 400, 600, 800, 1000, 1018, 1020];
+
+/// Rays aimed at the interior edges and vertices of a tiled height field,
+/// the whole configuration scaled by `2^k` (exactly, where it stays normal;
+/// otherwise it is another valid case, which the oracle judges as it is):
 /// the exact variant hits exactly the triangles the oracle hits, and the
 /// watertight and the exact variant hit at least one triangle of the mesh
 /// for every ray that passes through the surface there (its exact line
 /// meets the triangles around the target from the front; a ray that only
 /// touches a ridge may pass over it within rounding).
-#[test]
-fn no_ray_slips_through_shared_edges() {
+fn shared_edges_hold_at(k: i32) {
     let mut rng = SplitMix64::new(7);
     let mesh = TiledMesh::new(&mut rng, 6);
     let (edges, inner) = (mesh.interior_edges(), mesh.interior_vertices());
+    let s = pow2(k);
+    let vertices = |t: usize| mesh.triangle(t).map(|p| p * s);
     let tris: Vec<Triangle> = (0..mesh.triangles.len())
-        .map(|k| {
-            let v = mesh.triangle(k);
+        .map(|t| {
+            let v = vertices(t);
             Triangle::new(v[0], v[1], v[2]).unwrap()
         })
         .collect();
     let (mut double_hits, mut crossing) = (0, 0);
     for _ in 0..3000 {
         let (o, d, around) = mesh.shared_edge_ray(&mut rng, &edges, &inner);
+        let (o, d) = (o * s, d * s);
         let ray = Ray::new(o, d).unwrap();
         let mut exact_hits = 0;
         let mut watertight_hits = 0;
-        for (k, tri) in tris.iter().enumerate() {
-            let case = (o, d, mesh.triangle(k));
+        for (t, tri) in tris.iter().enumerate() {
+            let case = (o, d, vertices(t));
             let want = exact_crossing(&case)
                 .is_some_and(|(num, den)| oracle::ratio_in(&num, &den, 0.0, f64::MAX));
             let got = tri.cast_exact(&ray, Interval::FORWARD).is_some();
-            assert_eq!(got, want, "triangle {k}, ray {o:?} {d:?}");
+            assert_eq!(got, want, "2^{k}: triangle {t}, ray {o:?} {d:?}");
             exact_hits += got as u32;
             watertight_hits += tri.cast_watertight(&ray, Interval::FORWARD).is_some() as u32;
         }
         let lines: Vec<_> = around
             .iter()
-            .map(|&k| {
-                let v = mesh.triangle(k).map(|p| p.to_array());
+            .map(|&t| {
+                let v = vertices(t).map(|p| p.to_array());
                 oracle::line_triangle(o.to_array(), d.to_array(), v)
             })
             .collect();
@@ -363,22 +425,33 @@ fn no_ray_slips_through_shared_edges() {
             crossing += 1;
             assert!(
                 exact_hits >= 1 && watertight_hits >= 1,
-                "slipped through: {o:?} {d:?}"
+                "2^{k}: slipped through: {o:?} {d:?} ({exact_hits} {watertight_hits})"
             );
         }
         double_hits += (exact_hits >= 2) as u32;
     }
     // Nearly every ray passes through the surface at its target.
-    assert!(crossing > 2500, "{crossing}");
+    assert!(crossing > 2500, "2^{k}: {crossing}");
     // The aim is close enough that rays do meet shared edges exactly (a hit
     // on both triangles): otherwise the test would not test edges.
-    assert!(double_hits > 0);
+    assert!(double_hits > 0, "2^{k}");
 }
 
-/// The same on a closed mesh, an octahedron: rays from outside through its
-/// edges and vertices into its interior hit at least two faces (in and out).
 #[test]
-fn closed_octahedron_is_watertight() {
+fn no_ray_slips_through_shared_edges() {
+    for k in SCALES {
+        shared_edges_hold_at(k);
+    }
+}
+
+/// The same on a closed mesh, an octahedron scaled by `2^k`: rays from
+/// outside through its edges and vertices into its interior hit at least
+/// two faces (in and out). Origins lie up to 3.9 from the centre on an
+/// axis: at `2^1022`, the difference of an origin and the vertex on the
+/// far side (up to 4.9 times `2^1022`) overflows. Returns how many rays met such
+/// a difference.
+fn octahedron_holds_at(k: i32) -> usize {
+    let s = pow2(k);
     let p = [
         DVec3::X,
         DVec3::Y,
@@ -389,38 +462,52 @@ fn closed_octahedron_is_watertight() {
     ];
     let faces: Vec<Triangle> = (0..4)
         .flat_map(|i| {
-            let (a, b) = (p[i], p[(i + 1) % 4]);
+            let (a, b) = (p[i] * s, p[(i + 1) % 4] * s);
             [
-                Triangle::new(a, b, p[4]).unwrap(),
-                Triangle::new(b, a, p[5]).unwrap(),
+                Triangle::new(a, b, p[4] * s).unwrap(),
+                Triangle::new(b, a, p[5] * s).unwrap(),
             ]
         })
         .collect();
     let mut rng = SplitMix64::new(11);
+    let mut overflows = 0;
     for _ in 0..5000 {
-        let (i, s) = ((rng.next_u64() % 4) as usize, rng.next_f64());
+        let (i, f) = ((rng.next_u64() % 4) as usize, rng.next_f64());
         let apex = if rng.next_u64() & 1 == 0 { p[4] } else { p[5] };
         // A point on an edge (rounded): around the equator or up to an apex.
         let target = match rng.next_u64() % 3 {
-            0 => p[i] + (p[(i + 1) % 4] - p[i]) * s,
-            1 => p[i] + (apex - p[i]) * s,
+            0 => p[i] + (p[(i + 1) % 4] - p[i]) * f,
+            1 => p[i] + (apex - p[i]) * f,
             _ => p[i],
         };
         // From outside, through the edge point towards a point inside: the
         // line crosses the interior, so it meets at least two faces (a line
         // through an edge point at random could only touch the edge).
         let inner = DVec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 0.4 - 0.2;
-        let o = target + (target - inner) * (1.0 + 4.0 * rng.next_f64());
-        let ray = Ray::new(o, target - o).unwrap();
+        // Up to 3.9 from the centre on some axis (below `2^1024` at `2^1022`).
+        let out = target - inner;
+        let reach = (3.9 - target.abs().max_element()) / out.abs().max_element();
+        let o = target + out * (0.05 + (reach - 0.05) * rng.next_f64());
+        let ray = Ray::new(o * s, (target - o) * s).unwrap();
+        overflows += p.iter().any(|&v| !(v * s - o * s).is_finite()) as usize;
         let line = Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap();
         let count = |f: &dyn Fn(&Triangle) -> bool| faces.iter().filter(|t| f(t)).count();
         let exact = count(&|t| t.cast_exact(&ray, line).is_some());
         let watertight = count(&|t| t.cast_watertight(&ray, line).is_some());
         assert!(
             exact >= 2 && watertight >= 2,
-            "{o:?} {target:?}: {exact} {watertight}"
+            "2^{k}: {o:?} {target:?}: {exact} {watertight}"
         );
     }
+    overflows
+}
+
+#[test]
+fn closed_octahedron_is_watertight() {
+    for k in SCALES {
+        octahedron_holds_at(k);
+    }
+    assert!(octahedron_holds_at(1022) > 100);
 }
 
 #[test]

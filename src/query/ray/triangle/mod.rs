@@ -50,11 +50,13 @@ mod closed;
 mod exact;
 mod plane_parameter;
 mod variant;
+mod watertight;
 
 use crate::shape::Triangle;
 pub use exact::{BOUNDED_T_ULPS, BoundedTriangleHit, ExactRay};
 use glam::DVec3;
 pub use variant::{Exact, MollerTrumbore, TriangleTest, Watertight, WatertightRay};
+use watertight::Shear;
 
 /// Where a ray meets a triangle: the ray parameter and the barycentric
 /// coordinates of the hit point.
@@ -167,6 +169,19 @@ impl Triangle {
     /// exact arithmetic: a miss where it computes as zero, possibly a hit
     /// where it rounds away from zero. A degenerate triangle is a miss.
     ///
+    /// # Every scale
+    /// Both guarantees hold for every finite input, from coordinates near
+    /// `2^-1074` to near `f64::MAX`: no false miss at a shared edge or
+    /// vertex, and a hit only where the ray passes within a few units of
+    /// rounding (relative to the vertices' coordinates about the origin)
+    /// of the closed triangle. Where the edge functions' products or the
+    /// parameter's numerator would overflow or underflow (sheared
+    /// coordinates beyond about `2^±340`, or a vertex about `f64::MAX`
+    /// from the origin), the same test is evaluated again at powers of two
+    /// chosen from the values, consistently for the triangles sharing an
+    /// edge; everywhere else the arithmetic is the rounded formula above
+    /// (the module `watertight.rs` gives the argument).
+    ///
     /// ```
     /// use exactray::interval::Interval;
     /// use exactray::query::ray::Ray;
@@ -178,6 +193,18 @@ impl Triangle {
     /// let ray = Ray::new([-0.4, 0.1, 1.0], [0.7, 0.2, -1.0]).unwrap();
     /// let hits = [a, b].into_iter().filter(|t| t.cast_watertight(&ray, Interval::FORWARD).is_some());
     /// assert!(hits.count() >= 1);
+    /// // The same square and ray scaled by 2^600, where the edge functions'
+    /// // products overflow: the same answers, t unchanged.
+    /// let s = 2f64.powi(600);
+    /// let scaled = |t: &Triangle| {
+    ///     let [p, q, r] = t.vertices();
+    ///     Triangle::new(p * s, q * s, r * s).unwrap()
+    /// };
+    /// let far = Ray::new([-0.4 * s, 0.1 * s, s], [0.7 * s, 0.2 * s, -s]).unwrap();
+    /// for t in [a, b] {
+    ///     let near = t.cast_watertight(&ray, Interval::FORWARD);
+    ///     assert_eq!(scaled(&t).cast_watertight(&far, Interval::FORWARD), near);
+    /// }
     /// ```
     #[inline]
     pub fn cast_watertight(&self, ray: &Ray, range: Interval) -> Option<TriangleHit> {
@@ -303,22 +330,6 @@ impl Triangle {
     }
 }
 
-/// A ray prepared for the watertight test: its origin, and its direction
-/// scaled by a power of two and permuted so that its largest coordinate
-/// comes last.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Shear {
-    origin: DVec3,
-    /// The axis of the direction's largest coordinate, `kz`; the others
-    /// follow cyclically (`kx = kz + 1`, `ky = kz + 2`, modulo 3).
-    kz: usize,
-    /// `d_kx, d_ky, d_kz` of the scaled direction, `|d_kz|` in `[1, 2)`
-    /// unless the direction is subnormal or huge.
-    d: [f64; 3],
-    /// The power of two the direction was multiplied by.
-    scale: f64,
-}
-
 /// The axis of `d`'s largest coordinate in magnitude (the first of equal
 /// ones), `kz` of the watertight and exact tests' permutations.
 #[inline(always)]
@@ -341,94 +352,6 @@ fn permute<const K: usize>(p: DVec3) -> [f64; 3] {
         1 => [p.z, p.x, p.y],
         _ => [p.x, p.y, p.z],
     }
-}
-
-impl Shear {
-    #[inline(always)]
-    pub(super) fn of(ray: &Ray) -> Shear {
-        let d = ray.direction();
-        let kz = largest_axis(d);
-        let p = match kz {
-            0 => permute::<0>(d),
-            1 => permute::<1>(d),
-            _ => permute::<2>(d),
-        };
-        // `2^-e` for `|d_kz|` in `[2^e, 2^(e+1))`, from the exponent bits,
-        // clamped so that it is a normal number.
-        let biased = ((p[2].to_bits() >> 52) & 0x7ff).clamp(1, 2045);
-        let scale = f64::from_bits((2046 - biased) << 52);
-        Shear {
-            origin: ray.origin(),
-            kz,
-            d: p.map(|x| x * scale),
-            scale,
-        }
-    }
-
-    #[inline(always)]
-    pub(super) fn cast(&self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
-        match self.kz {
-            0 => self.cast_permuted::<0>(tri, range),
-            1 => self.cast_permuted::<1>(tri, range),
-            _ => self.cast_permuted::<2>(tri, range),
-        }
-    }
-
-    /// The vertex `p` relative to the origin, sheared and multiplied by
-    /// `d_kz`: `(d_kz p_kx - d_kx p_kz, d_kz p_ky - d_ky p_kz, p_kz)`.
-    #[inline(always)]
-    fn vertex<const K: usize>(&self, p: DVec3) -> [f64; 3] {
-        let [x, y, z] = permute::<K>(p - self.origin);
-        let [dx, dy, dz] = self.d;
-        [dz * x - dx * z, dz * y - dy * z, z]
-    }
-
-    #[inline(always)]
-    fn cast_permuted<const K: usize>(
-        &self,
-        tri: &Triangle,
-        range: Interval,
-    ) -> Option<TriangleHit> {
-        let v = tri.v.map(|p| self.vertex::<K>(p));
-        sheared_hit(v, self.d[2], self.scale, range)
-    }
-}
-
-/// The watertight test on the sheared vertices `(x, y, z)` (see
-/// [`Shear::vertex`]), for a direction scaled by `scale` whose largest
-/// coordinate is `dz`.
-#[inline(always)]
-fn sheared_hit(
-    [a, b, c]: [[f64; 3]; 3],
-    dz: f64,
-    scale: f64,
-    range: Interval,
-) -> Option<TriangleHit> {
-    // Each edge's function from its own two vertices, unfused, so that
-    // the reversed edge of a neighbour computes exactly its negation.
-    let e0 = c[0] * b[1] - c[1] * b[0];
-    let e1 = a[0] * c[1] - a[1] * c[0];
-    let e2 = b[0] * a[1] - b[1] * a[0];
-    if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
-        return None;
-    }
-    let det = e0 + e1 + e2;
-    // NaN: overflowed products.
-    if det == 0.0 || det.is_nan() {
-        return None;
-    }
-    // The sheared system's t is (sum e_i z_i) / (d_kz det), in units of
-    // the scaled direction; the scale converts it back. One division.
-    let inv = 1.0 / (det * dz);
-    let t = (e0 * a[2] + e1 * b[2] + e2 * c[2]) * inv * scale;
-    if !range.admits(t) {
-        return None;
-    }
-    Some(TriangleHit {
-        t,
-        u: e1 * dz * inv,
-        v: e2 * dz * inv,
-    })
 }
 
 impl RayCast for Triangle {
