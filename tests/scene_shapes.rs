@@ -72,6 +72,16 @@ fn check_ray(scene: &Scene, ray: &Ray, name: &str) -> usize {
         assert_eq!(scene.cast(ray, range), want.map(|h| h.hit), "{name}");
         assert_eq!(scene.cast_t(ray, range), want.map(|h| h.hit.t), "{name}");
         assert_eq!(scene.hits(ray, range), want.is_some(), "{name}");
+        // The shadow segment to the ray's point at the range's end.
+        let end = ray.at(range.max());
+        if let (Ok(blocked), Ok(segment)) = (
+            scene.occluded_between(ray.origin(), end),
+            Ray::new(ray.origin(), end - ray.origin()),
+        ) {
+            let unit = Interval::new(0.0, 1.0).unwrap();
+            let want = brute::<Watertight>(scene, &segment, unit).is_some();
+            assert_eq!(blocked, want, "{name}: segment {ray:?} to {end}");
+        }
         let want = brute::<Exact>(scene, ray, range);
         let got = scene.closest_hit_with::<Exact>(ray, range);
         assert_eq!(got, want, "{name}: {ray:?} {range:?} exact");

@@ -138,7 +138,7 @@ fn situation(
                 assert!(!mesh.occluded(&ray, Interval::FORWARD), "{h:?} {w}");
             }
             // The shadow ray to a point beyond, along the same direction.
-            let (to, range) = spawn_ray_to(&h.hit, h.hit.point + w.normalize() * scale).unwrap();
+            let (to, range) = spawn_ray_to(&h.hit, h.hit.point + unit(w) * scale).unwrap();
             counts.self_hits += tri.cast(&to, range).is_some() as u64;
             let fixed = Ray::new(h.hit.point + side * 1e-8, w).unwrap();
             counts.epsilon_self_hits += tri.cast(&fixed, Interval::FORWARD).is_some() as u64;
@@ -150,11 +150,17 @@ fn situation(
     }
 }
 
+/// `w` normalized, for `w` as long as a scene is large (`2^1000`), whose
+/// square overflows.
+fn unit(w: DVec3) -> DVec3 {
+    (w / w.abs().max_element()).normalize()
+}
+
 /// A triangle across `ray` (perpendicular to it, of size `scale / 100`)
 /// centred 8 ulps of the origin's largest coordinate beyond the origin:
 /// does the scene find it?
 fn blocker_found(ray: &Ray, scale: f64) -> bool {
-    let (o, w) = (ray.origin(), ray.direction().normalize());
+    let (o, w) = (ray.origin(), unit(ray.direction()));
     let ulp = o.abs().max_element().max(f64::MIN_POSITIVE) * f64::EPSILON;
     let b = o + w * (8.0 * ulp);
     let (a, c) = w.any_orthonormal_pair();
@@ -185,6 +191,10 @@ fn spawned_rays_never_hit_their_own_triangle() {
         (1.0, 0.0),
         (1e-30, 0.0),
         (1e30, 0.0),
+        (2f64.powi(-600), 0.0),
+        (2f64.powi(600), 0.0),
+        (2f64.powi(-1000), 0.0),
+        (2f64.powi(1000), 0.0),
         (1.0, 1e6),
         (1.0, 1e7),
         (1.0, 1e8),

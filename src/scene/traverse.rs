@@ -516,16 +516,26 @@ mod tests {
     /// on faces, edges and corners) and integer rays (zero and `-0.0`
     /// components among them), ranges with and without an end, against
     /// exact rational slab tests of every leaf lane, with both builders
-    /// and the segment walk's extra rounding.
+    /// and the segment walk's extra rounding; and the same with every
+    /// coordinate of the mesh and the rays scaled by `2^k`, from `2^-1000`
+    /// to `2^1000` (the slab parameters, and so the exact answers, are
+    /// those of the integers).
     #[test]
     fn wide_walk_reaches_every_leaf_the_exact_segment_meets() {
+        for k in [0, -1000, -600, -300, 300, 600, 1000] {
+            walk_reaches_every_leaf_at(k);
+        }
+    }
+
+    fn walk_reaches_every_leaf_at(k: i32) {
+        let s = crate::arith::exponent::scale_pow2(1.0, k);
         let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
         let mut vertices = Vec::new();
         let mut triangles = Vec::new();
         for k in 0..600u32 {
             let base = [rng.int(12), rng.int(12), rng.int(12)];
             for _ in 0..3 {
-                vertices.push([0, 1, 2].map(|i| (base[i] + rng.int(2)) as f64));
+                vertices.push([0, 1, 2].map(|i| (base[i] + rng.int(2)) as f64 * s));
             }
             triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
         }
@@ -542,8 +552,8 @@ mod tests {
             for n in &bvh.nodes {
                 for l in 0..WIDTH {
                     if n.count[l] > 0 {
-                        let lo = [0, 1, 2].map(|k| n.min[k][l] as i128);
-                        let hi = [0, 1, 2].map(|k| n.max[k][l] as i128);
+                        let lo = [0, 1, 2].map(|k| (n.min[k][l] / s) as i128);
+                        let hi = [0, 1, 2].map(|k| (n.max[k][l] / s) as i128);
                         leaves.push((lo, hi, n.link[l] as usize, n.count[l] as usize));
                     }
                 }
@@ -555,8 +565,14 @@ mod tests {
                 if d == [0; 3] {
                     d[2] = 1;
                 }
-                let df = d.map(|c| if c == 0 && i % 2 == 0 { -0.0 } else { c as f64 });
-                let ray = Ray::new(o.map(|c| c as f64), df).unwrap();
+                let df = d.map(|c| {
+                    if c == 0 && i % 2 == 0 {
+                        -0.0
+                    } else {
+                        c as f64 * s
+                    }
+                });
+                let ray = Ray::new(o.map(|c| c as f64 * s), df).unwrap();
                 let max = (i % 3 != 0).then(|| rng.int(20).abs());
                 let range = Interval::new(0.0, max.map_or(f64::INFINITY, |m| m as f64)).unwrap();
                 let mut ours = Leaves {

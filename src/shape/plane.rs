@@ -1,10 +1,15 @@
 use super::{finite, nonzero, radius};
+use crate::arith::exponent::unit_pow2;
 use crate::error::InputError;
 use crate::point::IntoDVec3;
 use glam::DVec3;
 
 /// The plane through `point` with normal `normal` (any non-zero length):
 /// `(x - point) . normal = 0`. Hits report the normal as given, normalized.
+/// The normal is kept multiplied by the power of two that brings its
+/// largest coordinate near 1 (exactly the same direction), so that a
+/// cast's dot products neither overflow nor underflow however long it was
+/// given.
 ///
 /// ```
 /// use exactray::shape::Plane;
@@ -28,9 +33,10 @@ impl Plane {
     /// [`InputError::NonFinite`] (`"point"`, `"normal"`),
     /// [`InputError::Degenerate`] for a zero normal.
     pub fn new(point: impl IntoDVec3, normal: impl IntoDVec3) -> Result<Plane, InputError> {
+        let normal = nonzero("normal", normal)?;
         Ok(Plane {
             point: finite("point", point)?,
-            normal: nonzero("normal", normal)?,
+            normal: normal * unit_pow2(normal.abs().max_element()),
         })
     }
 }

@@ -27,15 +27,16 @@ use crate::shape::{Aabb, Bounded, CappedCylinder, Cone, Cylinder, Disk, Plane, Q
 use alloc::vec::Vec;
 use glam::DVec3;
 
+/// `2^k` for `-1022 <= k <= 1023`.
+const fn pow2(k: i32) -> f64 {
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
 /// Scales and offsets `(scale, offset)` for [`random_scene`] (the offset
-/// along `(1, -0.7, 0.4)`): unit, tiny and huge scenes at the origin (to
-/// `10^±100`), and scenes `10^6` to `10^8` from it at unit and `1e-3`
-/// sizes. Not beyond `10^±100`: at `10^-200` the scene and the loop over
-/// its primitives still disagree on some spheres and quadrics (not yet
-/// analysed). The capped cylinder's, disk's and cone's rim, height and
-/// nappe tests, which underflowed below about `10^-51` and overflowed
-/// above `10^51`, now compare at the shape's own power-of-two scale.
-pub const SCENE_PLACES: [(f64, f64); 12] = [
+/// along `(1, -0.7, 0.4)`): unit, tiny and huge scenes at the origin, from
+/// `2^-1000` to `2^1000`, and scenes `10^6` to `10^8` (or `2^20`) times
+/// their size from it, at unit, `1e-3`, `2^±600` and `2^±980` sizes.
+pub const SCENE_PLACES: [(f64, f64); 21] = [
     (1.0, 0.0),
     (1e-30, 0.0),
     (1e-40, 0.0),
@@ -43,11 +44,20 @@ pub const SCENE_PLACES: [(f64, f64); 12] = [
     (1e40, 0.0),
     (1e-100, 0.0),
     (1e100, 0.0),
+    (1e-200, 0.0),
+    (1e200, 0.0),
+    (pow2(-600), 0.0),
+    (pow2(600), 0.0),
+    (pow2(-1000), 0.0),
+    (pow2(1000), 0.0),
     (1.0, 1e6),
     (1.0, 1e7),
     (1.0, 1e8),
     (1e-3, 1e8),
     (1e-3, 1e6),
+    (pow2(-600), pow2(-580)),
+    (pow2(600), pow2(620)),
+    (pow2(980), pow2(1000)),
 ];
 
 /// A closed octahedron around `c` of radius `r`, its triangles

@@ -39,6 +39,7 @@
 //! # finite_never_panics();
 //! ```
 
+use crate::arith::exponent::scale_pow2;
 use crate::scene::Scene;
 use crate::testing::finite_f64_from_bits;
 use crate::testing::{
@@ -181,8 +182,10 @@ pub fn hard_plane_side() -> impl Strategy<Value = [DVec3; 5]> {
 /// Scenes of 1 to 8 primitives from [`random_scene`]: spheres, capped and
 /// infinite cylinders and cones, paraboloids, disks, planes, closed
 /// octahedra with vertex normals and triangle soups, at one of the
-/// [`SCENE_PLACES`]. Brute force over [`Scene::primitives`] is the
-/// oracle of their closest hits.
+/// [`SCENE_PLACES`] or, as often, at a scale `2^k` for any `k` from -1000
+/// to 1000, at the origin or `2^20` or `2^27` times that scale from it.
+/// Brute force over [`Scene::primitives`] is the oracle of their closest
+/// hits.
 ///
 /// ```
 /// use exactray::prelude::*;
@@ -201,11 +204,23 @@ pub fn hard_plane_side() -> impl Strategy<Value = [DVec3; 5]> {
 /// # occluded_is_a_hit();
 /// ```
 pub fn small_scenes() -> impl Strategy<Value = Scene> {
-    (
-        any::<u64>(),
-        1usize..=8,
+    let place = prop_oneof![
         proptest::sample::select(&SCENE_PLACES[..]),
-    )
+        (-1000i32..=1000, proptest::sample::select(&[0, 20, 27][..])).prop_map(|(k, far)| {
+            // Offsets only where the scene stays below 2^1010.
+            let far = if k + far <= 1000 { far } else { 0 };
+            let scale = scale_pow2(1.0, k);
+            (
+                scale,
+                if far == 0 {
+                    0.0
+                } else {
+                    scale_pow2(1.0, k + far)
+                },
+            )
+        }),
+    ];
+    (any::<u64>(), 1usize..=8, place)
         .prop_map(|(seed, count, (scale, offset))| {
             let offset = DVec3::new(1.0, -0.7, 0.4) * offset;
             random_scene(&mut SplitMix64::new(seed), count, scale, offset)

@@ -4,7 +4,7 @@
 use super::point_error::dot_error;
 use super::{Hit, Precise, RayCast, hit_at, unit_or};
 use crate::arith::error_free::{exact_difference, two_prod, two_sum};
-use crate::arith::exponent::Grain;
+use crate::arith::exponent::{Grain, unit_pow2};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::{U, gamma};
@@ -66,10 +66,13 @@ impl Cylinder {
     }
 
     /// The unit normal at `x` (on or near the surface): away from the axis.
+    /// `w - a (w . a) / (a . a)` is linear in `w = x - point` and of degree
+    /// zero in `a`, so both are first scaled by powers of two near 1: the
+    /// dot products then neither underflow nor overflow at any scale.
     #[inline]
     fn normal_at(&self, x: DVec3, fallback: DVec3) -> DVec3 {
-        let w = x - self.point;
-        let a = self.axis;
+        let near_one = |v: DVec3| v * unit_pow2(v.abs().max_element());
+        let (w, a) = (near_one(x - self.point), near_one(self.axis));
         unit_or(w - a * (w.dot(a) / a.dot(a)), fallback)
     }
 }

@@ -11,7 +11,7 @@
 //! stated error of `f64::MAX` may go either way. `line_roots`, which
 //! reports the whole line, returns such roots as infinities of their sign.
 
-use crate::arith::exponent::unit_pow2;
+use crate::arith::exponent::{pow2, unit_pow2};
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -254,31 +254,26 @@ pub(crate) fn hit_at(
 pub struct Precise<S>(pub S);
 
 /// `v` normalized, or `fallback` normalized when `v` is zero (a point
-/// sphere, a cone's apex, the all-zero quadric). A vector whose squared
-/// length underflows or overflows (a subnormal ray direction, a huge
-/// gradient) is first scaled by a power of two, exactly, so any nonzero
-/// finite `v` or `fallback` gives a unit vector.
+/// sphere, a cone's apex, the all-zero quadric). A vector whose largest
+/// coordinate lies outside `[2^-500, 2^500]` is first scaled by a power of
+/// two, exactly: its squared length would otherwise overflow, underflow or
+/// land among the subnormals, whose few bits make the "unit" vector
+/// inaccurate. So any nonzero finite `v` or `fallback` gives a unit
+/// vector within a few units of rounding.
 #[inline]
 pub(crate) fn unit_or(v: DVec3, fallback: DVec3) -> DVec3 {
-    let n = v.normalize_or_zero();
-    if n != DVec3::ZERO {
-        return n;
-    }
-    // The cold path: rescaled, then the fallback likewise.
-    let rescaled = |w: DVec3| {
+    let unit = |w: DVec3| {
         let m = w.abs().max_element();
-        if m > 0.0 {
+        if (pow2(-500)..=pow2(500)).contains(&m) {
+            w.normalize_or_zero()
+        } else if m > 0.0 && m.is_finite() {
             (w * unit_pow2(m)).normalize_or_zero()
         } else {
             DVec3::ZERO
         }
     };
-    let n = rescaled(v);
-    if n != DVec3::ZERO {
-        n
-    } else {
-        rescaled(fallback)
-    }
+    let n = unit(v);
+    if n != DVec3::ZERO { n } else { unit(fallback) }
 }
 
 #[cfg(test)]
