@@ -9,6 +9,14 @@
 //! Kinds listed without a checker are counted and reported as skipped, so a
 //! fixture nobody checks is visible rather than silently passing.
 //!
+//! Every file is also checked scaled by `2^k` for each `k` of [`SCALES`],
+//! from `-1000` to `1000`: an exact uniform scaling of a configuration
+//! (points, directions and radii by `2^k`; a quadric's coefficients by
+//! `2^-2k`, `2^-k` and 1, [`Scaling`]) leaves every answer unchanged, the
+//! ray parameters included. A line with a number that would leave the
+//! normal range is left out of that copy, and counted; the counts per kind
+//! and scale are printed (`--nocapture`).
+//!
 //! Most kinds have one case per line. A `nearest` file is one point set (its
 //! `p` lines) and queries against it (its `q` lines), so its checkers take
 //! the whole file: see [`Check`].
@@ -72,7 +80,109 @@ struct Kind {
     /// Runs the exact oracle of `exactray-oracle` (`tests/oracle/src/oracle.rs`); agreement with
     /// CGAL validates the fixtures and the oracle against each other.
     oracle: Option<Check>,
+    /// Which numbers of a line scale with the configuration: an exact
+    /// scaling of every input by `2^k` leaves every answer unchanged.
+    scaling: Scaling,
 }
+
+/// How a kind's lines scale: the power of `2^k` each field is multiplied
+/// by when the whole configuration is (points, directions and radii by
+/// `2^k`; answers, counts, indices and ray parameters unchanged).
+#[derive(Clone, Copy)]
+enum Scaling {
+    /// `count` coordinates from field `from`; the other fields unchanged.
+    Coordinates { from: usize, count: usize },
+    /// `ray_quadric`: the origin and direction by `2^k`, the quadratic
+    /// coefficients `A`..`F` by `2^-2k`, the linear ones `G`, `H`, `I` by
+    /// `2^-k`, `J` unchanged: the quadric's points are scaled by `2^k`.
+    Quadric,
+    /// A whole-file kind: a line tagged `tag` holds `count` coordinates
+    /// after its tag; `set` lines (points, vertices) are the file's set,
+    /// the others its queries.
+    Tagged(&'static [Tag]),
+}
+
+/// A line tag of a [`Scaling::Tagged`] kind.
+struct Tag {
+    tag: &'static str,
+    count: usize,
+    set: bool,
+}
+
+impl Scaling {
+    /// The power of `2^k` field `i` of `fields` is multiplied by.
+    fn power(self, fields: &[&str], i: usize) -> i32 {
+        match self {
+            Scaling::Coordinates { from, count } => i32::from((from..from + count).contains(&i)),
+            Scaling::Quadric => match i {
+                0..6 => 1,
+                6..12 => -2,
+                12..15 => -1,
+                _ => 0,
+            },
+            Scaling::Tagged(_) => self
+                .tag(fields)
+                .map_or(0, |t| i32::from((1..=t.count).contains(&i))),
+        }
+    }
+
+    /// Whether a line is part of a whole file's set (a point, a vertex):
+    /// a file whose set cannot be scaled is skipped whole.
+    fn is_set(self, fields: &[&str]) -> bool {
+        self.tag(fields).is_some_and(|t| t.set)
+    }
+
+    /// Whether a line is a case: every line of a per-line kind, a query
+    /// of a whole-file kind.
+    fn is_case(self, fields: &[&str]) -> bool {
+        match self {
+            Scaling::Tagged(_) => self.tag(fields).is_some_and(|t| !t.set),
+            _ => true,
+        }
+    }
+
+    /// The [`Tag`] of a whole-file kind's line.
+    fn tag(self, fields: &[&str]) -> Option<&'static Tag> {
+        match self {
+            Scaling::Tagged(tags) => tags.iter().find(|t| fields.first() == Some(&t.tag)),
+            _ => None,
+        }
+    }
+}
+
+/// `nearest`: `p x y z` (the set) and `q x y z i ...`.
+const NEAREST_TAGS: &[Tag] = &[
+    Tag {
+        tag: "p",
+        count: 3,
+        set: true,
+    },
+    Tag {
+        tag: "q",
+        count: 3,
+        set: false,
+    },
+];
+
+/// `ray_mesh`: `v x y z` (the set), `f i j k` (unchanged), `r o d ...` and
+/// `s p q blocked`.
+const RAY_MESH_TAGS: &[Tag] = &[
+    Tag {
+        tag: "v",
+        count: 3,
+        set: true,
+    },
+    Tag {
+        tag: "r",
+        count: 6,
+        set: false,
+    },
+    Tag {
+        tag: "s",
+        count: 6,
+        set: false,
+    },
+];
 
 const KINDS: &[Kind] = &[
     Kind {
@@ -80,72 +190,84 @@ const KINDS: &[Kind] = &[
         min_fields: 7,
         predicate: Some(PerLine(crate_orient2d)),
         oracle: Some(PerLine(oracle_orient2d)),
+        scaling: Scaling::Coordinates { from: 0, count: 6 },
     },
     Kind {
         name: "orient3d",
         min_fields: 13,
         predicate: Some(PerLine(crate_orient3d)),
         oracle: Some(PerLine(oracle_orient3d)),
+        scaling: Scaling::Coordinates { from: 0, count: 12 },
     },
     Kind {
         name: "plane_side",
         min_fields: 16,
         predicate: Some(PerLine(crate_plane_side)),
         oracle: Some(PerLine(oracle_plane_side)),
+        scaling: Scaling::Coordinates { from: 0, count: 15 },
     },
     Kind {
         name: "incircle",
         min_fields: 9,
         predicate: Some(PerLine(crate_incircle)),
         oracle: Some(PerLine(oracle_incircle)),
+        scaling: Scaling::Coordinates { from: 0, count: 8 },
     },
     Kind {
         name: "insphere",
         min_fields: 16,
         predicate: Some(PerLine(crate_insphere)),
         oracle: Some(PerLine(oracle_insphere)),
+        scaling: Scaling::Coordinates { from: 0, count: 15 },
     },
     Kind {
         name: "ray_sphere",
         min_fields: 11,
         predicate: Some(PerLine(crate_ray_sphere)),
         oracle: Some(PerLine(oracle_ray_sphere)),
+        scaling: Scaling::Coordinates { from: 0, count: 10 },
     },
     Kind {
         name: "ray_cylinder",
         min_fields: 14,
         predicate: Some(PerLine(crate_ray_cylinder)),
         oracle: Some(PerLine(oracle_ray_cylinder)),
+        scaling: Scaling::Coordinates { from: 0, count: 13 },
     },
     Kind {
         name: "ray_cone",
         min_fields: 14,
         predicate: Some(PerLine(crate_ray_cone)),
         oracle: Some(PerLine(oracle_ray_cone)),
+        scaling: Scaling::Coordinates { from: 0, count: 13 },
     },
     Kind {
         name: "ray_quadric",
         min_fields: 17,
         predicate: Some(PerLine(crate_ray_quadric)),
         oracle: Some(PerLine(oracle_ray_quadric)),
+        scaling: Scaling::Quadric,
     },
     Kind {
         name: "ray_triangle",
         min_fields: 16,
         predicate: Some(PerLine(crate_ray_triangle)),
         oracle: Some(PerLine(oracle_ray_triangle)),
+        scaling: Scaling::Coordinates { from: 0, count: 15 },
     },
     Kind {
         name: "nearest",
         min_fields: 4,
         predicate: Some(WholeFile(crate_nearest)),
         oracle: Some(WholeFile(oracle_nearest)),
+        scaling: Scaling::Tagged(NEAREST_TAGS),
     },
     Kind {
         name: "ray_mesh",
         min_fields: 4,
         predicate: Some(WholeFile(crate_ray_mesh)),
         oracle: Some(WholeFile(oracle_ray_mesh)),
+        scaling: Scaling::Tagged(RAY_MESH_TAGS),
     },
 ];
 
@@ -1039,10 +1161,19 @@ fn shown(path: &Path) -> String {
 // ---------------------------------------------------------------------------
 // Running
 
+/// The scales the crate is also checked at: every file's configuration
+/// multiplied by `2^k`, which leaves every answer unchanged.
+const SCALES: [i32; 8] = [-1000, -900, -600, -300, 300, 600, 900, 1000];
+
 #[derive(Default)]
 struct Report {
-    checked: BTreeMap<&'static str, usize>,
+    /// Cases checked by (kind, scale exponent; 0 for the files as written).
+    checked: BTreeMap<(&'static str, i32), usize>,
+    /// Lines of kinds without a checker.
     skipped: BTreeMap<&'static str, usize>,
+    /// Lines left out of a scaled copy, by (kind, scale exponent): a
+    /// number would leave the normal range (or the file's set would).
+    unscaled: BTreeMap<(&'static str, i32), usize>,
     /// Mismatch counts by (kind, section), to show where an implementation
     /// goes wrong at a glance.
     mismatches_by_section: BTreeMap<(&'static str, String), usize>,
@@ -1067,8 +1198,17 @@ impl Report {
     /// Prints the counts and panics if anything failed.
     fn finish(self, what: &str) {
         println!("{what}:");
-        for (kind, n) in &self.checked {
-            println!("  {kind}: {n} cases checked");
+        for ((kind, k), n) in &self.checked {
+            let left = self.unscaled.get(&(*kind, *k)).copied().unwrap_or(0);
+            match k {
+                0 => println!("  {kind}: {n} cases checked"),
+                _ => println!("  {kind} at 2^{k}: {n} cases checked, {left} left out"),
+            }
+        }
+        for ((kind, k), n) in &self.unscaled {
+            if !self.checked.contains_key(&(*kind, *k)) {
+                println!("  {kind} at 2^{k}: 0 cases checked, {n} left out");
+            }
         }
         for (kind, n) in &self.skipped {
             println!("  {kind}: {n} lines SKIPPED (no checker for this kind yet)");
@@ -1096,40 +1236,160 @@ impl Report {
         panic!("{what} failed:\n{msg}");
     }
 
-    /// Records the outcome of the case on `line`.
-    fn record(&mut self, kind: &'static str, line: &Line, outcome: Outcome) {
+    /// Records the outcome of the case on `line`, at scale `2^k`.
+    fn record(&mut self, kind: &'static str, k: i32, line: &Line, outcome: Outcome) {
         let at = &line.at;
         match outcome {
             Ok(Ok(verdict)) => {
-                *self.checked.entry(kind).or_default() += 1;
+                *self.checked.entry((kind, k)).or_default() += 1;
                 if let Verdict::Mismatch { expected, got } = verdict {
                     let section = &line.section;
                     let message = format!(
                         "{at} [{section}]: expected {expected}, got {got}: {}",
-                        line.text
+                        line.text()
                     );
                     self.mismatch(kind, section, message);
                 }
             }
             Ok(Err(e)) => self.problems.push(format!("{at}: {e}")),
-            Err(_) => self.problems.push(format!("{at}: panicked: {}", line.text)),
+            Err(_) => self
+                .problems
+                .push(format!("{at}: panicked: {}", line.text())),
         }
     }
 }
 
-/// A line that is not a comment or blank.
-struct Line<'a> {
-    /// `file:line`, as reported.
+/// A line that is not a comment or blank (or a scaled copy of one).
+struct Line {
+    /// `file:line`, as reported (with the scale for a copy).
     at: String,
     /// The section it is in (the generator's `# section NAME: ...` lines).
     section: String,
-    text: &'a str,
-    fields: Vec<&'a str>,
+    fields: Vec<String>,
+}
+
+impl Line {
+    fn text(&self) -> String {
+        self.fields.join(" ")
+    }
+
+    fn fields(&self) -> Vec<&str> {
+        self.fields.iter().map(String::as_str).collect()
+    }
+
+    /// The line with its configuration scaled by `2^k` ([`Scaling`]), or
+    /// `None` where a scaled number would leave the normal range (a zero
+    /// stays zero). A field that does not parse is kept as it is: the
+    /// unscaled line reports it.
+    fn scaled(&self, scaling: Scaling, k: i32) -> Option<Line> {
+        let fields = self.fields();
+        let mut out = Vec::with_capacity(fields.len());
+        for (i, field) in fields.iter().enumerate() {
+            let m = scaling.power(&fields, i);
+            match field.parse::<f64>() {
+                Ok(x) if m != 0 && x.is_finite() => {
+                    let y = x * 2f64.powi(m * k / 2) * 2f64.powi(m * k - m * k / 2);
+                    if x != 0.0 && !y.is_normal() {
+                        return None;
+                    }
+                    out.push(format!("{y:e}"));
+                }
+                _ => out.push(field.to_string()),
+            }
+        }
+        Some(Line {
+            at: format!("{} at 2^{k}", self.at),
+            section: self.section.clone(),
+            fields: out,
+        })
+    }
+}
+
+/// Runs `check` on `lines` (one file's cases, or a scaled copy's) at scale
+/// `2^k`; a panic is reported against its line rather than aborting.
+fn check_lines(report: &mut Report, kind: &'static Kind, check: Check, k: i32, lines: &[Line]) {
+    match check {
+        PerLine(check) => {
+            for line in lines {
+                let outcome = catch_unwind(|| check(&line.fields()));
+                report.record(kind.name, k, line, outcome);
+            }
+        }
+        WholeFile(check) => {
+            let fields: Vec<Vec<&str>> = lines.iter().map(Line::fields).collect();
+            match catch_unwind(|| check(&fields)) {
+                Ok(outcomes) => {
+                    for (i, outcome) in outcomes {
+                        report.record(kind.name, k, &lines[i], outcome);
+                    }
+                }
+                Err(_) => {
+                    let at = lines.first().map_or("?", |l| l.at.as_str());
+                    report.problems.push(format!("{at}: the file panicked"));
+                }
+            }
+        }
+    }
+}
+
+/// The copy of a file's `lines` scaled by `2^k` and the number of cases
+/// left out: a line of a per-line kind, or a query of a whole-file kind,
+/// whose numbers would leave the normal range; every case of a whole file
+/// whose set would.
+fn scaled_copy(kind: &Kind, lines: &[Line], k: i32) -> (Vec<Line>, usize) {
+    let mut copy = Vec::with_capacity(lines.len());
+    let mut left_out = 0;
+    for line in lines {
+        match line.scaled(kind.scaling, k) {
+            Some(scaled) => copy.push(scaled),
+            None if kind.scaling.is_set(&line.fields()) => {
+                let cases = lines.iter().filter(|l| kind.scaling.is_case(&l.fields()));
+                return (Vec::new(), cases.count());
+            }
+            None => left_out += 1,
+        }
+    }
+    (copy, left_out)
+}
+
+/// The lines of a fixture file that are not comments or blank, each with
+/// its section; `None` with the problems where a line is malformed.
+fn read_lines(file: &str, text: &str, report: &mut Report) -> Vec<Line> {
+    let mut section = String::from("no section");
+    let mut lines = Vec::new();
+    for (index, line) in text.lines().enumerate() {
+        let at = format!("{file}:{}", index + 1);
+        if let Some(comment) = line.strip_prefix('#') {
+            // The generator opens each section with "# section NAME: ...".
+            if let Some(rest) = comment.trim_start().strip_prefix("section ") {
+                section = rest.split(':').next().unwrap_or(rest).trim().to_string();
+            }
+            continue;
+        }
+        if line.trim().is_empty() {
+            continue;
+        }
+        // Single spaces separate fields; anything else is a malformed line.
+        let fields: Vec<&str> = line.split(' ').collect();
+        if fields.iter().any(|f| f.is_empty()) {
+            report
+                .problems
+                .push(format!("{at}: fields must be separated by single spaces"));
+            continue;
+        }
+        lines.push(Line {
+            at,
+            section: section.clone(),
+            fields: fields.iter().map(|f| f.to_string()).collect(),
+        });
+    }
+    lines
 }
 
 /// Runs the checker that `select` picks from each line's kind over every
-/// fixture line; kinds without one are counted as skipped.
-fn run(select: fn(&Kind) -> Option<Check>) -> Report {
+/// fixture line, and over copies of every file scaled by `2^k` for each
+/// `k` of `scales`; kinds without a checker are counted as skipped.
+fn run(select: fn(&Kind) -> Option<Check>, scales: &[i32]) -> Report {
     let mut report = Report::default();
     for path in fixture_files() {
         let file = shown(&path);
@@ -1147,81 +1407,45 @@ fn run(select: fn(&Kind) -> Option<Check>) -> Report {
                 continue;
             }
         };
-        let checker = select(kind);
-        let mut section = String::from("no section");
-        let mut lines = Vec::new();
-        for (index, line) in text.lines().enumerate() {
-            let at = format!("{file}:{}", index + 1);
-            if let Some(comment) = line.strip_prefix('#') {
-                // The generator opens each section with "# section NAME: ...".
-                if let Some(rest) = comment.trim_start().strip_prefix("section ") {
-                    section = rest.split(':').next().unwrap_or(rest).trim().to_string();
-                }
-                continue;
-            }
-            if line.trim().is_empty() {
-                continue;
-            }
-            // Single spaces separate fields; anything else is a malformed line.
-            let fields: Vec<&str> = line.split(' ').collect();
-            if fields.iter().any(|f| f.is_empty()) {
-                report
-                    .problems
-                    .push(format!("{at}: fields must be separated by single spaces"));
-                continue;
-            }
-            if checker.is_none() {
-                if fields.len() < kind.min_fields {
+        let lines = read_lines(&file, &text, &mut report);
+        let Some(check) = select(kind) else {
+            for line in &lines {
+                if line.fields.len() < kind.min_fields {
                     report.problems.push(format!(
-                        "{at}: {} fields, a {} line has at least {}",
-                        fields.len(),
+                        "{}: {} fields, a {} line has at least {}",
+                        line.at,
+                        line.fields.len(),
                         kind.name,
                         kind.min_fields
                     ));
                 }
-                *report.skipped.entry(kind.name).or_default() += 1;
-                continue;
             }
-            lines.push(Line {
-                at,
-                section: section.clone(),
-                text: line,
-                fields,
-            });
-        }
-        match checker {
-            None => {}
-            // A panic is reported against its line rather than aborting the run.
-            Some(PerLine(check)) => {
-                for line in &lines {
-                    let outcome = catch_unwind(|| check(&line.fields));
-                    report.record(kind.name, line, outcome);
-                }
-            }
-            Some(WholeFile(check)) => {
-                let fields: Vec<Vec<&str>> = lines.iter().map(|l| l.fields.clone()).collect();
-                match catch_unwind(|| check(&fields)) {
-                    Ok(outcomes) => {
-                        for (i, outcome) in outcomes {
-                            report.record(kind.name, &lines[i], outcome);
-                        }
-                    }
-                    Err(_) => report.problems.push(format!("{file}: panicked")),
-                }
+            *report.skipped.entry(kind.name).or_default() += lines.len();
+            continue;
+        };
+        check_lines(&mut report, kind, check, 0, &lines);
+        for &k in scales {
+            let (copy, left_out) = scaled_copy(kind, &lines, k);
+            *report.unscaled.entry((kind.name, k)).or_default() += left_out;
+            if !copy.is_empty() {
+                check_lines(&mut report, kind, check, k, &copy);
             }
         }
     }
     report
 }
 
+/// The crate against every fixture, and against copies of every file
+/// scaled by `2^k` for each `k` of [`SCALES`] (from `2^-1000` to
+/// `2^1000`): an exact scaling leaves every answer unchanged.
 #[test]
 fn crate_matches_cgal_fixtures() {
-    run(|k| k.predicate).finish("exactray against the CGAL fixtures");
+    run(|k| k.predicate, &SCALES).finish("exactray against the CGAL fixtures");
 }
 
 #[test]
 fn oracle_matches_cgal_fixtures() {
-    run(|k| k.oracle).finish("the test oracle against the CGAL fixtures");
+    run(|k| k.oracle, &[]).finish("the test oracle against the CGAL fixtures");
 }
 
 #[test]
@@ -1413,4 +1637,59 @@ fn ray_mesh_files_are_parsed_strictly() {
             [(5, Some(true)), (6, Some(true))]
         );
     }
+}
+
+/// Scaled copies scale exactly the configuration's numbers, keep the
+/// answers, and leave out a line (or a whole file, for its set) with a
+/// number that would leave the normal range.
+#[test]
+fn scaled_copies_scale_the_configuration_only() {
+    let line = |text: &str| Line {
+        at: "x:1".to_string(),
+        section: String::new(),
+        fields: text.split(' ').map(String::from).collect(),
+    };
+    let kind = |name: &str| KINDS.iter().find(|k| k.name == name).unwrap();
+    let scaled =
+        |name: &str, text: &str, k: i32| line(text).scaled(kind(name).scaling, k).map(|l| l.text());
+    // A sphere's ray: every number but the count and the roots.
+    assert_eq!(
+        scaled("ray_sphere", "0 0 -3 0 0 1 0 0 0 1 2 2 4", 2).as_deref(),
+        Some("0e0 0e0 -1.2e1 0e0 0e0 4e0 0e0 0e0 0e0 4e0 2 2 4")
+    );
+    // A quadric: o and d by 2^k, A..F by 2^-2k, G..I by 2^-k, J kept.
+    assert_eq!(
+        scaled("ray_quadric", "1 2 3 4 5 6 1 1 1 1 1 1 1 1 1 1 0", 1).as_deref(),
+        Some(
+            "2e0 4e0 6e0 8e0 1e1 1.2e1 2.5e-1 2.5e-1 2.5e-1 2.5e-1 2.5e-1 2.5e-1 5e-1 5e-1 5e-1 1 0"
+        )
+    );
+    // Mesh lines: vertices and query coordinates; faces, flags, t and
+    // triangle indices kept.
+    assert_eq!(
+        scaled("ray_mesh", "v 1 0 -1", 3).as_deref(),
+        Some("v 8e0 0e0 -8e0")
+    );
+    assert_eq!(scaled("ray_mesh", "f 0 1 2", 3).as_deref(), Some("f 0 1 2"));
+    assert_eq!(
+        scaled("ray_mesh", "r 0 0 1 0 0 -1 1 1 0 3", 1).as_deref(),
+        Some("r 0e0 0e0 2e0 0e0 0e0 -2e0 1 1 0 3")
+    );
+    // Out of the normal range: left out.
+    assert_eq!(scaled("orient2d", "1e300 0 0 1 1 0 1", 100), None);
+    assert_eq!(scaled("orient2d", "1e-300 0 0 1 1 0 1", -100), None);
+    let mesh = [
+        "v 1e300 0 0",
+        "v 0 1 0",
+        "v 0 0 1",
+        "f 0 1 2",
+        "r 0 0 0 1 1 1 0",
+        "s 0 0 0 1 1 1 0",
+    ];
+    let lines: Vec<Line> = mesh.iter().map(|t| line(t)).collect();
+    let (copy, left_out) = scaled_copy(kind("ray_mesh"), &lines, 100);
+    assert!(copy.is_empty());
+    assert_eq!(left_out, 2);
+    let (copy, left_out) = scaled_copy(kind("ray_mesh"), &lines, -100);
+    assert_eq!((copy.len(), left_out), (6, 0));
 }
