@@ -5,11 +5,13 @@
 //! occlusion, and the exact shadow segment; the watertight queries must
 //! not panic and must report only admitted `t`.
 //!
-//! A mesh is 3 to 8 vertices on a small integer lattice scaled by a power
-//! of two (or raw bit patterns), and 1 to 8 triangles over them, so edges
-//! and vertices are shared; then edited towards degeneracy: two vertices
-//! merged, the ray aimed exactly at a vertex or an edge's midpoint, or
-//! laid in a triangle's plane.
+//! A mesh is 3 to 8 vertices on a small integer lattice scaled by `2^k` for
+//! a `k` from -1000 to 1000 (or raw bit patterns), and 1 to 8 triangles
+//! over them, so edges and vertices are shared; then edited towards
+//! degeneracy: two vertices merged, the ray aimed exactly at a vertex or
+//! an edge's midpoint, or laid in a triangle's plane. On the lattice, the
+//! watertight default must answer the same hit or miss as on the same
+//! configuration at scale 1.
 #![no_main]
 
 use arbitrary::{Arbitrary, Unstructured};
@@ -37,7 +39,9 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let raw = mode % 8 == 7;
-    let scale = 2f64.powi(i32::from(i8::arbitrary(&mut u).unwrap_or(0)) * 4);
+    // 2^k for k in -1000..=1000, in two exact steps.
+    let k = i32::from(i16::arbitrary(&mut u).unwrap_or(0)) % 1001;
+    let scale = 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
     let nv = 3 + usize::from(mode / 8 % 6);
     let mut vertices = Vec::with_capacity(nv);
     for _ in 0..nv {
@@ -137,6 +141,21 @@ fuzz_target!(|data: &[u8]| {
         assert!(Interval::FORWARD.admits(hit.hit.t), "{hit:?}");
     }
     let _ = mesh.occluded(&ray, Interval::FORWARD);
+    // On the lattice the configuration is an exact multiple of the scale:
+    // the watertight default answers the same hit or miss as on the
+    // configuration at scale 1, whose values stay where its ordinary
+    // evaluation answers (its rescaled one must not change an answer).
+    if !raw {
+        let unit = |p: DVec3| p / scale;
+        if let (Ok(m1), Ok(r1)) = (
+            TriangleMesh::new(&vertices.iter().map(|&p| unit(p)).collect::<Vec<_>>(), &triangles),
+            Ray::new(unit(o), unit(d)),
+        ) {
+            let at_scale = mesh.closest_hit(&ray, Interval::FORWARD).is_some();
+            let at_one = m1.closest_hit(&r1, Interval::FORWARD).is_some();
+            assert_eq!(at_scale, at_one, "{ray:?} at 2^{k}");
+        }
+    }
     // The segment from o to o + d (rounded: the segment is from o to
     // whatever q is).
     let q = o + d;

@@ -15,7 +15,8 @@
 //! The first byte picks how the case is built: raw bit patterns (every
 //! finite value), or a generated case (ordinary, far, near an edge,
 //! grazing) edited towards degeneracy: the ray aimed at a vertex or along
-//! an edge, two vertices merged, every coordinate scaled by a power of two.
+//! an edge, two vertices merged, every coordinate scaled by `2^k` for a `k`
+//! from -1000 to 1000.
 #![no_main]
 
 use arbitrary::{Arbitrary, Unstructured};
@@ -49,8 +50,10 @@ fn case(u: &mut Unstructured) -> arbitrary::Result<RayTriangleCase> {
         3 => o = v[k] + (v[k] - v[(k + 2) % 3]),
         _ => {}
     }
-    let scale = 2f64.powi(i32::from(i8::arbitrary(u)?) * 8);
-    Ok((o * scale, d * scale, v.map(|p| p * scale)))
+    // 2^k for k in -1000..=1000, in two exact steps.
+    let k = i32::from(i16::arbitrary(u)?) % 1001;
+    let scale = |p: DVec3| p * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+    Ok((scale(o), scale(d), v.map(scale)))
 }
 
 fn check(o: DVec3, d: DVec3, v: [DVec3; 3], prepared: &ExactRay, range: Interval) {
