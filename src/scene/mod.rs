@@ -61,7 +61,9 @@
 //! sign puts it inside both triangles or outside both), and near ties are
 //! ordered by the certified parameters. Where the ray crosses the surface
 //! at a shared edge or vertex of a closed or tiled part of a mesh, it is
-//! never missed.
+//! never missed, at every finite scale (the watertight test evaluates
+//! again at powers of two of its own where its products would overflow
+//! or underflow: [`Triangle::cast_watertight`]).
 //!
 //! With [`Exact`], every hit is a crossing of the exact segment with the
 //! triangle, so its box is never culled and the queries equal a loop over

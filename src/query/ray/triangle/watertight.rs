@@ -40,8 +40,9 @@
 //!   into `[1/2, 1)`, then the same unfused formula. That is a
 //!   function of the edge's two vertices alone, and exactly negated by
 //!   the reversed edge.
-//! - The ordinary evaluation decides signs only where the three edge
-//!   functions are finite (their sum is).
+//! - The ordinary evaluation decides a miss only from two finite edge
+//!   functions of strict opposite signs (computed from finite vertices),
+//!   and a hit only where every value it computed is in range.
 //!
 //! So two triangles sharing an edge either compute the same value for it,
 //! negated, or one of them computes zero (neutral): never both a strict
@@ -199,7 +200,7 @@ impl Shear {
     /// [`sheared_hit`] hands over (see the module docs).
     #[cold]
     #[inline(never)]
-    fn rescaled_hit<const K: usize>(&self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
+    fn rescaled_hit<const K: usize>(self, tri: &Triangle, range: Interval) -> Option<TriangleHit> {
         let [(a, za), (b, zb), (c, zc)] = tri.v.map(|p| self.rescaled_vertex::<K>(p));
         let e = [edge(c, b), edge(a, c), edge(b, a)];
         let negative = e.iter().any(|e| e.is_negative());
@@ -279,23 +280,31 @@ fn canonical_edge(c: Planar, b: Planar) -> ScaledFloat {
 /// coordinate is `dz`, in ordinary `f64` arithmetic: today's rounded
 /// formula wherever its values stay where it is exact or neutral.
 ///
-/// Signs are decided here only when the three edge functions are finite
-/// (their sum `det` is): then each is exact or neutral for these vertices
-/// (module docs). A hit is returned only where no step lost bits:
+/// A miss is decided here from the least and the greatest edge function
+/// (by comparisons: a NaN one may hide the others, and is neutral) when
+/// they have strict opposite signs and are both finite (their difference
+/// is): an edge function with an infinite or NaN vertex coordinate is
+/// itself infinite or NaN, so both come from finite vertices, and each is
+/// exact for them, the value the rescaled evaluation keeps too (module
+/// docs). A hit is returned only where no step lost bits:
 /// - `2^-1000 <= |det| <= 2^1000`. For a hit every edge function has the
 ///   sign of `det`, so `|det|` is the sum of their magnitudes, and the
 ///   underflow each may carry (`2^-1074`: its two products within
 ///   `2^-1075` of their roundings with unbounded exponent, a subnormal
 ///   difference exact) is below `2^-73` of `|det|`; `d_kz det` stays below
 ///   `2^1002`, and its reciprocal normal.
-/// - `|det| Z >= 2^-1000` with `Z = max |z|` (or `Z = 0`, where `t` is 0
-///   exactly): `t`'s unscaled value is a convex combination of the `z`
-///   (weights `e_i / det`), so `|t| <= Z`, and the underflow of the three
-///   products `e_i z_i` (`2^-1075` each) moves it by less than `2^-73 Z`.
-/// - the numerator finite (no overflow, no infinite `z`), and the unscaled
-///   `t` normal (or the numerator zero): `t` is then the rounded formula
-///   at every scale, and its last product by the direction's power of two
-///   rounds once, at most.
+///   The weights `e_i / det` of the `z` in `t` (a convex combination)
+///   then move by less than `2^-73`, and `t` by less than `2^-73 max |z|`,
+///   far below the rounding it carries anyway.
+/// - `2^-1000 <= |num| <= f64::MAX` for the numerator `sum e_i z_i`: no
+///   overflow (nor an infinite `z`), and the underflow of its three
+///   products (`2^-1075` each) is below `2^-73` of it. A numerator that
+///   is zero or tiny (an origin on or within `2^-1000` of the plane, in
+///   these units) goes to the rescaled evaluation, which computes it with
+///   the same roundings where nothing underflows.
+/// - the unscaled `t` normal: `t` is then the rounded formula at every
+///   scale, and its last product by the direction's power of two rounds
+///   once, at most.
 ///
 /// Everything else goes to [`Shear::rescaled_hit`].
 #[inline(always)]
@@ -305,25 +314,26 @@ fn sheared_hit([a, b, c]: [[f64; 3]; 3], dz: f64, scale: f64, range: Interval) -
     let e0 = c[0] * b[1] - c[1] * b[0];
     let e1 = a[0] * c[1] - a[1] * c[0];
     let e2 = b[0] * a[1] - b[1] * a[0];
+    let min = |a: f64, b: f64| if a < b { a } else { b };
+    let max = |a: f64, b: f64| if a > b { a } else { b };
+    let (lo, hi) = (min(min(e0, e1), e2), max(max(e0, e1), e2));
+    if lo < 0.0 && hi > 0.0 {
+        return if hi - lo < f64::INFINITY {
+            Ordinary::Decided(None)
+        } else {
+            Ordinary::Rescale
+        };
+    }
     let det = e0 + e1 + e2;
-    if !det.is_finite() {
-        return Ordinary::Rescale;
-    }
-    if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
-        return Ordinary::Decided(None);
-    }
     let num = e0 * a[2] + e1 * b[2] + e2 * c[2];
-    let size = det.abs();
-    let z = a[2].abs().max(b[2].abs()).max(c[2].abs());
-    let in_range = (LOW..=HIGH).contains(&size) && (size * z >= LOW || z == 0.0);
-    if !(in_range && num.is_finite()) {
+    if !((LOW..=HIGH).contains(&det.abs()) && (LOW..=f64::MAX).contains(&num.abs())) {
         return Ordinary::Rescale;
     }
     // The sheared system's t is (sum e_i z_i) / (d_kz det), in units of
     // the scaled direction; the scale converts it back. One division.
     let inv = 1.0 / (det * dz);
     let unscaled = num * inv;
-    if !(unscaled.is_normal() || num == 0.0) {
+    if !unscaled.is_normal() {
         return Ordinary::Rescale;
     }
     let t = unscaled * scale;
