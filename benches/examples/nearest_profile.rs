@@ -3,7 +3,7 @@
 //! times on a shared machine are not:
 //!
 //! ```text
-//! cargo build --release --example nearest_profile
+//! cargo build --release -p exactray-bench --example nearest_profile
 //! valgrind --tool=callgrind --toggle-collect='*nearest_profile*queries_*' \
 //!     target/release/examples/nearest_profile uniform 1000000 10000
 //! ```

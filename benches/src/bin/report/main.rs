@@ -1,13 +1,13 @@
-//! The speed-against-error report (see REPORT.md in the project notes):
-//! every routine family of the crate beside its peers, on ordinary and hard
-//! inputs, timed and checked against the exact answer.
+//! The speed-against-error report (`docs/report.md`): every routine family
+//! of the crate beside the crates a user would otherwise pick, on ordinary
+//! and hard inputs, timed and checked against the exact answer.
 //!
 //! ```text
-//! cargo run --release --example report [-- --quick] [-- --only orient3d,incircle]
-//!     [-- --stream] [-- --export-inputs DIR]
+//! cargo run --release -p exactray-bench --bin report [-- OPTIONS]
 //! ```
 //! Prints a table (progress on stderr) and writes `target/report/report.md`,
-//! `report.json` and one `<family>.svg` per family.
+//! `report.json` and one `<family>.svg` per family at the workspace root.
+//! `--help` lists the options, `--list` the families.
 //!
 //! `--stream` times loops over every case of a class instead of a working
 //! set that stays in cache (`Config::streaming`). `--export-inputs DIR`
@@ -15,9 +15,9 @@
 //! times into `DIR` (`export.rs`) for `tools/cgal-timing`, then runs as
 //! usual.
 //!
-//! To add a family: a module under `examples/report/` and a line in
-//! [`FAMILIES`]. The inputs come from `exactray::testing`, the exact answers
-//! from the `exactray-oracle` crate (`tests/oracle`).
+//! To add a family: a module beside this file and a line in [`FAMILIES`].
+//! The inputs come from `exactray::testing`, the exact answers from the
+//! `exactray-oracle` crate (`tests/oracle`).
 
 mod export;
 mod framework;
@@ -51,62 +51,176 @@ use std::time::Instant;
 /// Measures one family: its rows.
 type Family = fn(&Config) -> Vec<Row>;
 
-/// Every family, in report order.
-const FAMILIES: &[(&str, Family)] = &[
-    ("orient2d", |cfg| orient2d::family().run(cfg)),
-    ("orient3d", |cfg| orient3d::family().run(cfg)),
-    ("incircle", |cfg| incircle::family().run(cfg)),
-    ("insphere", |cfg| insphere::family().run(cfg)),
-    ("plane_side", |cfg| plane_side::family().run(cfg)),
-    ("nearest", nearest::run),
-    ("nearest_build", nearest_build::run),
-    ("ray_sphere", |cfg| ray_sphere::family().run(cfg)),
-    ("ray_cylinder", |cfg| ray_cylinder::family().run(cfg)),
-    ("ray_cone", |cfg| ray_cone::family().run(cfg)),
-    ("ray_quadric", |cfg| ray_quadric::family().run(cfg)),
-    ("ray_triangle", ray_triangle::run),
-    ("raster_triangle", raster_triangle::run),
-    ("closest_hit", scene::run_closest),
-    ("any_hit", scene::run_any_hit),
-    ("spawn", scene::run_spawn),
-    ("render", render::run),
-    ("delaunay", delaunay::run),
+/// Every family, in report order, with what it measures (`--list`).
+const FAMILIES: &[(&str, &str, Family)] = &[
+    ("orient2d", "sign of (b - a) x (c - a)", |cfg| {
+        orient2d::family().run(cfg)
+    }),
+    ("orient3d", "sign of det[b - a, c - a, d - a]", |cfg| {
+        orient3d::family().run(cfg)
+    }),
+    ("incircle", "d inside the circle through a, b, c", |cfg| {
+        incircle::family().run(cfg)
+    }),
+    (
+        "insphere",
+        "e inside the sphere through a, b, c, d",
+        |cfg| insphere::family().run(cfg),
+    ),
+    ("plane_side", "p and q against a triangle's plane", |cfg| {
+        plane_side::family().run(cfg)
+    }),
+    ("nearest", "nearest-point queries", nearest::run),
+    (
+        "nearest_build",
+        "building the nearest-point index",
+        nearest_build::run,
+    ),
+    ("ray_sphere", "first hit of a ray on a sphere", |cfg| {
+        ray_sphere::family().run(cfg)
+    }),
+    ("ray_cylinder", "first hit on a cylinder", |cfg| {
+        ray_cylinder::family().run(cfg)
+    }),
+    ("ray_cone", "first hit on a cone", |cfg| {
+        ray_cone::family().run(cfg)
+    }),
+    ("ray_quadric", "first hit on a general quadric", |cfg| {
+        ray_quadric::family().run(cfg)
+    }),
+    (
+        "ray_triangle",
+        "ray against one triangle",
+        ray_triangle::run,
+    ),
+    (
+        "raster_triangle",
+        "the pixels of one triangle, against one ray per pixel",
+        raster_triangle::run,
+    ),
+    (
+        "closest_hit",
+        "closest hit in a mesh scene",
+        scene::run_closest,
+    ),
+    ("any_hit", "shadow rays in a mesh scene", scene::run_any_hit),
+    (
+        "spawn",
+        "secondary rays leaving a surface",
+        scene::run_spawn,
+    ),
+    (
+        "render",
+        "one frame: Z-buffer against one ray per pixel",
+        render::run,
+    ),
+    (
+        "delaunay",
+        "a Delaunay triangulator on the predicates",
+        delaunay::run,
+    ),
 ];
+
+/// What `--help` prints.
+const USAGE: &str = "\
+The speed-against-error report: every routine family of exactray beside the
+crates a user would otherwise pick, timed and checked against the exact answer.
+
+usage: cargo run --release -p exactray-bench --bin report -- [OPTIONS]
+
+options:
+  --quick               fewer cases and repetitions (a few minutes)
+  --only F[,F...]       only these families (see --list)
+  --stream              time loops over every case of a class, not a working
+                        set that stays in cache
+  --export-inputs DIR   also write the sign families' cases, exactray's
+                        answers and the times to DIR (for tools/cgal-timing)
+  --list                list the families and exit
+  --help                print this and exit
+
+Writes target/report/report.md, report.json and one <family>.svg per family
+(format: docs/report.md). Embree's scene rows need `--features embree`.
+";
+
+/// The command line, parsed: `Err` with the exit code for `--help`,
+/// `--list` and bad options.
+struct Args {
+    quick: bool,
+    stream: bool,
+    only: Option<Vec<String>>,
+    export: Option<std::path::PathBuf>,
+}
+
+fn parse_args(args: &[String]) -> Result<Args, i32> {
+    let mut parsed = Args {
+        quick: false,
+        stream: false,
+        only: None,
+        export: None,
+    };
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = || {
+            it.next().cloned().ok_or_else(|| {
+                eprintln!("{arg} needs a value; see --help");
+                2
+            })
+        };
+        match arg.as_str() {
+            "--help" | "-h" => {
+                print!("{USAGE}");
+                return Err(0);
+            }
+            "--list" => {
+                for (name, what, _) in FAMILIES {
+                    println!("{name:<16} {what}");
+                }
+                return Err(0);
+            }
+            "--quick" => parsed.quick = true,
+            "--stream" => parsed.stream = true,
+            "--only" => {
+                let list: Vec<String> = value()?.split(',').map(str::to_string).collect();
+                if let Some(bad) = list.iter().find(|n| !FAMILIES.iter().any(|f| f.0 == *n)) {
+                    eprintln!("--only: no family {bad}; --list names them");
+                    return Err(2);
+                }
+                parsed.only = Some(list);
+            }
+            "--export-inputs" => parsed.export = Some(value()?.into()),
+            _ => {
+                eprintln!("unknown argument {arg}; see --help");
+                return Err(2);
+            }
+        }
+    }
+    Ok(parsed)
+}
 
 fn main() -> std::io::Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let quick = args.iter().any(|a| a == "--quick");
-    let value = |option: &str| {
-        args.iter()
-            .position(|a| a == option)
-            .and_then(|i| args.get(i + 1))
+    let args = match parse_args(&args) {
+        Ok(args) => args,
+        Err(code) => std::process::exit(code),
     };
-    let only: Option<Vec<String>> =
-        value("--only").map(|list| list.split(',').map(str::to_string).collect());
-    const OPTIONS: [&str; 4] = ["--quick", "--only", "--stream", "--export-inputs"];
-    if let Some(unknown) = args
-        .iter()
-        .find(|a| a.starts_with("--") && !OPTIONS.contains(&a.as_str()))
-    {
-        eprintln!(
-            "unknown option {unknown}; options: --quick, --only family[,family...], --stream, \
-             --export-inputs DIR"
-        );
-        std::process::exit(2);
-    }
+    let quick = args.quick;
     let mut cfg = Config::new(quick);
-    if args.iter().any(|a| a == "--stream") {
+    if args.stream {
         cfg = cfg.streaming();
     }
-    cfg.export = value("--export-inputs").map(std::path::PathBuf::from);
+    cfg.export = args.export;
     let families: Vec<_> = FAMILIES
         .iter()
-        .filter(|(name, _)| only.as_ref().is_none_or(|o| o.iter().any(|n| n == name)))
+        .filter(|(name, _, _)| {
+            args.only
+                .as_ref()
+                .is_none_or(|o| o.iter().any(|n| n == name))
+        })
         .collect();
 
     let start = Instant::now();
     let mut rows = Vec::new();
-    for (k, (name, run)) in families.iter().enumerate() {
+    for (k, (name, _, run)) in families.iter().enumerate() {
         let t = Instant::now();
         let new = run(&cfg);
         let wrong = new
@@ -128,7 +242,7 @@ fn main() -> std::io::Result<()> {
     let (targets, met, total) = targets::check(&rows);
     let notes: String = families
         .iter()
-        .flat_map(|(name, _)| framework::notes(name))
+        .flat_map(|(name, _, _)| framework::notes(name))
         .map(|n| n + "\n\n")
         .collect();
     println!("{table}");
@@ -137,7 +251,11 @@ fn main() -> std::io::Result<()> {
         println!("{notes}");
     }
 
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/report");
+    // The workspace root's target/, whichever directory the report runs from.
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("benches/ lies in the workspace")
+        .join("target/report");
     std::fs::create_dir_all(&dir)?;
     let mut md = format!(
         "# exactray: speed against error\n\n{} run: {} cases checked against the exact answer per family and inputs; \
@@ -155,7 +273,7 @@ fn main() -> std::io::Result<()> {
             format!("## Notes\n\n{notes}")
         },
     );
-    for (name, _) in &families {
+    for (name, _, _) in &families {
         let family_rows: Vec<&Row> = rows.iter().filter(|r| r.family == *name).collect();
         std::fs::write(
             dir.join(format!("{name}.svg")),
