@@ -46,7 +46,7 @@
 //!
 //! # The exact rule
 //! With [`Exact`] the triangles are closed sets and every decision is
-//! exact (FORMAT.md's `ray_mesh` rule): a ray lying in a triangle's plane
+//! exact (`docs/fixture-format.md`'s `ray_mesh` rule): a ray lying in a triangle's plane
 //! touches it along a segment and hits it where it enters (at the range's
 //! start when it starts inside; [`Triangle::cast_exact_closed`]); two hits
 //! whose certified parameters lie within their error of each other are

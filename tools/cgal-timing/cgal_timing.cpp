@@ -79,7 +79,7 @@ P3 point_at<P3>(const double* c) {
 }
 
 // One predicate family: its point type, points per case and CGAL's answer
-// in FORMAT.md's sign conventions (which are CGAL's own).
+// in `docs/fixture-format.md`'s sign conventions (which are CGAL's own).
 struct Orient2d {
   using P = P2;
   static constexpr int N = 3;

@@ -13,7 +13,7 @@
 //!   or `x y z`), as IEEE binary64: `coords` values per case.
 //! - `<family>-<inputs>.sign`: one signed byte per case, exactray's answer
 //!   (`-1`, `0`, `1`; `plane_side` in its `1` same side, `-1` opposite, `0`
-//!   on the plane), in CGAL's sign conventions (`../shared/fixtures/FORMAT.md`).
+//!   on the plane), in CGAL's sign conventions (`docs/fixture-format.md`).
 //! - `manifest.txt`: `#` comments, then `timing working_set reps min_loop_ns`
 //!   (how the report timed: the median of `reps` loops over the first
 //!   `working_set` cases, each loop repeated to last at least `min_loop_ns`),

@@ -96,7 +96,7 @@ pub fn table(rows: &[Row]) -> String {
     markdown(&header, &body)
 }
 
-/// `report.json`: the rows with exactly the fields REPORT.md names, in its
+/// `report.json`: the rows with exactly the fields `docs/report.md` names, in its
 /// order (a `serde_json` map would sort them).
 pub fn json(rows: &[Row]) -> String {
     let s = |v: &str| serde_json::to_string(v).expect("a string serializes");

@@ -107,7 +107,7 @@ pub struct RayFamily<C> {
     pub oracle: fn(&C) -> Option<f64>,
     /// Whether the exact first hit (`first`, the oracle's rounding of it)
     /// lies in `[t - error, t + error]`, decided exactly: the check of a
-    /// value that comes with a bound (REPORT.md).
+    /// value that comes with a bound (`docs/report.md`).
     pub within: fn(case: &C, first: f64, t: f64, error: f64) -> bool,
     pub methods: Vec<Box<dyn Measure<C, Option<Answer>>>>,
     /// Methods that do not run on an input class (a peer without the shape).
@@ -192,7 +192,7 @@ impl<C> RayFamily<C> {
                     ns_per_op: ns,
                     cases: n as u64,
                     // A root outside its certified bound is as wrong as a
-                    // wrong hit (REPORT.md, "Values that come with a bound").
+                    // wrong hit (`docs/report.md`, "Values that come with a bound").
                     errors: wrong + outside,
                     max_ulps: (!ulps.is_empty()).then_some(max),
                     max_bound_ulps: (!bounds.is_empty()).then_some(bmax),

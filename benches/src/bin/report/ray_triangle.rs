@@ -22,7 +22,7 @@
 //! largest distance in ulps from a method's `t` to the correctly rounded
 //! exact `t`, over the hits it gets right; an answer that comes with a
 //! certified bound (`exactray-exact-bounded`) whose interval misses the
-//! exact `t` is an error too (`../shared/REPORT.md`, "Values that come with
+//! exact `t` is an error too (`docs/report.md`, "Values that come with
 //! a bound"), and a note gives the bounds' sizes. On `shared-edges`, an error is a
 //! ray that no triangle of the mesh reports (a false miss: the exact line
 //! meets a triangle around the target), and `cases` counts rays; ns/op is

@@ -642,7 +642,7 @@ fn setups(cfg: &Config) -> &'static [Arc<Setup>] {
 }
 
 /// The scene's name as an inputs prefix: none for the sphere, whose
-/// inputs are the plain `primary:N`, `diffuse:N`, ... of REPORT.md.
+/// inputs are the plain `primary:N`, `diffuse:N`, ... of `docs/report.md`.
 fn prefix(s: &Setup) -> String {
     match s.name {
         "sphere" | "far" => String::new(),

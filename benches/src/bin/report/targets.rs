@@ -40,7 +40,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
             all.push(t(family, inputs, "robust", 1.0, true));
         }
     }
-    // Issue 4, nearest points at 10^6 points: at least as fast as kiddo in
+    // Nearest points at 10^6 points: at least as fast as kiddo in
     // distribution and as rstar off it, 3x faster than rstar in
     // distribution, built at least as fast as kiddo; never a wrong point.
     all.extend([
@@ -65,7 +65,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
     ] {
         all.push(t("nearest", inputs, "", 0.0, true));
     }
-    // Issue 3, ray–triangle: the watertight variant within 1.3x of
+    // Ray–triangle: the watertight variant within 1.3x of
     // Möller–Trumbore and the exact one within 2x on ordinary rays; parry3d
     // at least 1.5x slower than the watertight one (at most 1/1.5 of its
     // time); no false miss at shared edges for either, no wrong hit or miss
@@ -90,7 +90,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
     for inputs in ["far", "near-edge", "grazing"] {
         all.push(variant("exactray-exact", inputs, "", 0.0, true));
     }
-    // Issue 16 §1: the exact test at most 2x Möller–Trumbore on ordinary
+    // The prepared exact ray–triangle test at most 2x Möller–Trumbore on ordinary
     // rays with the ray prepared once (as a scene does), in either tier
     // (`t` within 4 ulps, or with its certified bound); no wrong hit or
     // miss, and no exact `t` outside a returned bound, on any input.
@@ -100,7 +100,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
             all.push(variant(method, inputs, "", 0.0, true));
         }
     }
-    // Issue 16, quadrics in tiers: the default cast (exact hit or miss,
+    // Quadrics in tiers: the default cast (exact hit or miss,
     // the stable formula's root with a certified bound) at most 1.2x Ray
     // Tracing Gems' stable form and at most parry3d's time on `uniform`
     // and `far` rays; no wrong hit or miss and no exact root outside the
@@ -134,7 +134,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
     all
 }
 
-/// Issue 14, scenes (inputs named by their triangle counts, so read off
+/// Scenes (inputs named by their triangle counts, so read off
 /// the rows): the default closest hit at most obvhs's `CwBvh` time and a
 /// third of parry3d's on camera and diffuse rays, the exact variant within
 /// 1.5x of it; a shadow ray at most half a closest-hit query's time on the

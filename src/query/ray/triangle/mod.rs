@@ -248,7 +248,7 @@ impl Triangle {
     }
 
     /// [`Triangle::cast_exact`] under the closed-triangle rule of the
-    /// scene's exact queries (FORMAT.md's `ray_mesh`): the same answer for
+    /// scene's exact queries (`docs/fixture-format.md`'s `ray_mesh`): the same answer for
     /// every ray not lying in the triangle's plane, and for a ray in its
     /// plane (the three edge signs exactly zero), which touches the closed
     /// triangle along a segment, the hit where it enters it within `range`:
