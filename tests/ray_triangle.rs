@@ -536,7 +536,8 @@ fn triangle_validation() {
 /// `cast_exact` once reported as a hit at `t = inf`.
 #[test]
 fn mixed_subnormal_and_huge_coordinates() {
-    let (o, d, v) = exactray::testing::ray_triangle_finding(0).expect("the recorded fuzzer finding");
+    let (o, d, v) =
+        exactray::testing::ray_triangle_finding(0).expect("the recorded fuzzer finding");
     for range in [
         Interval::FORWARD,
         Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap(),

@@ -12,6 +12,9 @@
 //! - [`scene`]: obvhs's and parry3d's ray casts over a triangle mesh;
 //! - [`delaunay`]: spade's Delaunay triangulation.
 
+// `apfp_signum!` expands the in-sphere determinant by recursive macros.
+#![recursion_limit = "512"]
+
 pub mod delaunay;
 pub mod nearest;
 pub mod raster;

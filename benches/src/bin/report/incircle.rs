@@ -5,7 +5,7 @@ use crate::framework::method;
 use crate::signs::SignFamily;
 use exactray::testing::incircle_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{naive, robust, sign_of};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, robust, sign_of};
 use glam::DVec2;
 
 type Case = [DVec2; 4];
@@ -29,6 +29,9 @@ pub fn family() -> SignFamily<Case> {
                     p[3].into(),
                 ))
             }),
+            method("arithmetica", arithmetica::incircle),
+            method("axiolid-predicates", axiolid::incircle),
+            method("apfp", apfp::incircle),
         ],
     }
 }

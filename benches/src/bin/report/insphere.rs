@@ -6,7 +6,7 @@ use crate::framework::method;
 use crate::signs::SignFamily;
 use exactray::testing::insphere_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{minus_sign_of, naive, robust};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, minus_sign_of, naive, robust};
 use glam::DVec3;
 
 type Case = [DVec3; 5];
@@ -29,6 +29,9 @@ pub fn family() -> SignFamily<Case> {
                 let [a, b, c, d, e] = p.map(<[f64; 3]>::from);
                 minus_sign_of(geometry_predicates::insphere(a, b, c, d, e))
             }),
+            method("arithmetica", arithmetica::insphere),
+            method("axiolid-predicates", axiolid::insphere),
+            method("apfp", apfp::insphere),
         ],
     }
 }

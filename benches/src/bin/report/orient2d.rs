@@ -4,7 +4,7 @@ use crate::framework::method;
 use crate::signs::{SignFamily, batch};
 use exactray::testing::orient2d_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{naive, robust, sign_of};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, robust, sign_of};
 use glam::DVec2;
 
 type Case = [DVec2; 3];
@@ -24,6 +24,9 @@ pub fn family() -> SignFamily<Case> {
             method("geometry-predicates", |&[a, b, c]: &Case| {
                 sign_of(geometry_predicates::orient2d(a.into(), b.into(), c.into()))
             }),
+            method("arithmetica", arithmetica::orient2d),
+            method("axiolid-predicates", axiolid::orient2d),
+            method("apfp", apfp::orient2d),
         ],
     }
 }

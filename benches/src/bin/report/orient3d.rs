@@ -5,7 +5,7 @@ use crate::framework::method;
 use crate::signs::{SignFamily, batch};
 use exactray::testing::orient3d_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{minus_sign_of, naive, robust};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, minus_sign_of, naive, robust};
 use glam::DVec3;
 
 type Case = [DVec3; 4];
@@ -32,6 +32,13 @@ pub fn family() -> SignFamily<Case> {
             method("geometry-predicates", |&[a, b, c, d]: &Case| {
                 geometry_predicates(a, b, c, d)
             }),
+            method("arithmetica", |&[a, b, c, d]: &Case| {
+                arithmetica::orient3d(a, b, c, d)
+            }),
+            method("axiolid-predicates", |&[a, b, c, d]: &Case| {
+                axiolid::orient3d(a, b, c, d)
+            }),
+            method("apfp", |&[a, b, c, d]: &Case| apfp::orient3d(a, b, c, d)),
         ],
     }
 }

@@ -7,7 +7,7 @@ use crate::orient3d;
 use crate::signs::SignFamily;
 use exactray::testing::plane_side_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{naive, plane_side_by, robust};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, plane_side_by, robust};
 use glam::DVec3;
 
 type Case = [DVec3; 5];
@@ -29,6 +29,9 @@ pub fn family() -> SignFamily<Case> {
             method("geometry-predicates", |c: &Case| {
                 plane_side_by(orient3d::geometry_predicates, c)
             }),
+            method("arithmetica", arithmetica::plane_side),
+            method("axiolid-predicates", axiolid::plane_side),
+            method("apfp", apfp::plane_side),
         ],
     }
 }
