@@ -107,6 +107,7 @@ pub const MAX_POINTS: usize = u32::MAX as usize;
 
 /// One answer of a nearest-point query.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Nearest {
     /// The point's position in the slice the index was built from.
     pub index: usize,

@@ -9,6 +9,7 @@ use crate::sign::Sign;
 
 /// How two points lie with respect to a plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum SideRelation {
     /// Both strictly on the same side.
     Same,

@@ -230,6 +230,7 @@ pub struct TriangleMesh {
 
 /// The closest hit of a ray on a [`TriangleMesh`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeshHit {
     /// The index of the triangle hit, in the slice the mesh was built from.
     pub triangle: u32,
@@ -713,6 +714,50 @@ impl RayCast for TriangleMesh {
     #[inline]
     fn hits(&self, ray: &Ray, range: Interval) -> bool {
         self.occluded(ray, range)
+    }
+}
+
+/// A mesh serializes as its vertices, triangles and shading normals (with
+/// the `serde` feature); its hierarchy is rebuilt, by the default builder,
+/// when it deserializes through [`TriangleMesh::new`] and
+/// [`TriangleMesh::with_normals`], so bad data is an [`InputError`].
+#[cfg(feature = "serde")]
+impl serde::Serialize for TriangleMesh {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(serde::Serialize)]
+        #[serde(rename = "TriangleMesh")]
+        struct Data<'a> {
+            vertices: &'a [DVec3],
+            triangles: &'a [[u32; 3]],
+            normals: Option<&'a [DVec3]>,
+        }
+        Data {
+            vertices: &self.vertices,
+            triangles: &self.triangles,
+            normals: self.normals.as_deref(),
+        }
+        .serialize(serializer)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for TriangleMesh {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        #[derive(serde::Deserialize)]
+        #[serde(rename = "TriangleMesh", deny_unknown_fields)]
+        struct Data {
+            vertices: Vec<DVec3>,
+            triangles: Vec<[u32; 3]>,
+            #[serde(default)]
+            normals: Option<Vec<DVec3>>,
+        }
+        let d = Data::deserialize(deserializer)?;
+        let mesh = TriangleMesh::new(&d.vertices, &d.triangles);
+        match d.normals {
+            Some(normals) => mesh.and_then(|m| m.with_normals(&normals)),
+            None => mesh,
+        }
+        .map_err(serde::de::Error::custom)
     }
 }
 

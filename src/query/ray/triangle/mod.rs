@@ -59,6 +59,7 @@ pub use variant::{Exact, MollerTrumbore, TriangleTest, Watertight, WatertightRay
 /// Where a ray meets a triangle: the ray parameter and the barycentric
 /// coordinates of the hit point.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TriangleHit {
     /// The ray parameter: the hit is at `origin + t * direction`.
     pub t: f64,
