@@ -22,6 +22,12 @@ pub struct Config {
     /// `--export-inputs DIR`: where the sign families write their cases
     /// and exactray's answers (`export.rs`).
     pub export: Option<PathBuf>,
+    /// How long checking one method on one class of a sign family may
+    /// take; the cases left are not checked (the row's `cases` says so).
+    pub check_budget: Duration,
+    /// How long one method's timed loops on one class may take in all; a
+    /// slower method is timed on a prefix of the working set.
+    pub time_budget: Duration,
 }
 
 impl Config {
@@ -34,6 +40,8 @@ impl Config {
                 reps: 7,
                 min_loop: Duration::from_millis(2),
                 export: None,
+                check_budget: Duration::from_secs(3),
+                time_budget: Duration::from_secs(2),
             }
         } else {
             Config {
@@ -43,6 +51,8 @@ impl Config {
                 reps: 21,
                 min_loop: Duration::from_millis(5),
                 export: None,
+                check_budget: Duration::from_secs(20),
+                time_budget: Duration::from_secs(10),
             }
         }
     }

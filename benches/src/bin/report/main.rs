@@ -197,6 +197,40 @@ fn parse_args(args: &[String]) -> Result<Args, i32> {
     Ok(parsed)
 }
 
+/// Where a run's figures come from, for the pages that quote them: the
+/// command line, the Embree feature, the wall time and the commit (with
+/// `+changes` when the work tree differed from it).
+fn provenance(seconds: f64) -> String {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let git = |args: &[&str]| {
+        std::process::Command::new("git")
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .ok()
+            .filter(|o| o.status.success())
+            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+    };
+    let commit = match (
+        git(&["rev-parse", "--short", "HEAD"]),
+        git(&["status", "--porcelain"]),
+    ) {
+        (Some(c), Some(s)) if s.is_empty() => c,
+        (Some(c), Some(_)) => format!("{c}+changes"),
+        _ => "unknown".to_string(),
+    };
+    format!(
+        "Run: `report{}{}`, {:.0} s wall time, commit {commit}.",
+        if cfg!(feature = "embree") {
+            " (embree feature)"
+        } else {
+            ""
+        },
+        args.iter().map(|a| format!(" {a}")).collect::<String>(),
+        seconds
+    )
+}
+
 fn main() -> std::io::Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let args = match parse_args(&args) {
@@ -258,11 +292,12 @@ fn main() -> std::io::Result<()> {
         .join("target/report");
     std::fs::create_dir_all(&dir)?;
     let mut md = format!(
-        "# exactray: speed against error\n\n{} run: {} cases checked against the exact answer per family and inputs; \
+        "# exactray: speed against error\n\n{}\n\n{} run: {} cases checked against the exact answer per family and inputs; \
          ns/op is the median of {} timed loops over {} cases (the sign families; families sized otherwise say how \
          under Notes). `vs naive` and `vs robust` divide a row's time by \
          that method's on the same family and inputs, measured in the same run.\n\n{table}\n\
          ## Targets\n\n{met} of {total} met.\n\n{targets}\n{}## Plots\n\n",
+        provenance(start.elapsed().as_secs_f64()),
         if quick { "Quick" } else { "Full" },
         cfg.cases,
         cfg.reps,
