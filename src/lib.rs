@@ -41,7 +41,8 @@
 //!
 //! Features: `std` (default; implies `alloc`), `rayon` (default; parallel
 //! batch queries and builds of the index), `alloc` (the [`bvh`] and
-//! [`scene`] modules), `proptest` (the strategies of [`testing`]),
+//! [`scene`] modules), `ploc` (obvhs's PLOC builder for meshes, beside
+//! the default binned SAH one), `proptest` (the strategies of [`testing`]),
 //! `arbitrary` (`Arbitrary` for the input types of [`testing`], for users'
 //! fuzz targets), `serde` (`Serialize` and `Deserialize` for shapes, rays,
 //! intervals, hits, signs and meshes; types with invariants deserialize
@@ -117,7 +118,16 @@ pub use error::InputError;
 pub use point::{IntoDVec2, IntoDVec3};
 pub use sign::Sign;
 
-// The README's examples are compiled and run as doctests.
+// The examples of the README and of the guide and pictures pages are
+// compiled and run as doctests, so that they stay true.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
+
+#[cfg(doctest)]
+#[doc = include_str!("../docs/guide.md")]
+struct GuideDoctests;
+
+#[cfg(doctest)]
+#[doc = include_str!("../docs/pictures.md")]
+struct PicturesDoctests;

@@ -75,7 +75,7 @@
 
 mod batch;
 mod build;
-#[cfg(feature = "std")]
+#[cfg(feature = "ploc")]
 mod ploc;
 mod primitives;
 mod shading;
@@ -84,7 +84,7 @@ mod traverse;
 mod wide;
 
 pub use batch::BatchQueries;
-#[cfg(feature = "std")]
+#[cfg(feature = "ploc")]
 pub use ploc::PlocQuality;
 pub use primitives::{
     AnalyticShape, MAX_PRIMITIVES, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,
@@ -135,8 +135,8 @@ pub(crate) struct Node {
 
 const _: () = assert!(size_of::<Node>() == 56);
 
-/// What the PLOC builder (`ploc.rs`, with `std`) writes nodes with.
-#[cfg(feature = "std")]
+/// What the PLOC builder (`ploc.rs`, with `ploc`) writes nodes with.
+#[cfg(feature = "ploc")]
 impl Node {
     /// A box holding nothing (`min` above `max`), to grow.
     const EMPTY: Node = Node {
@@ -164,12 +164,13 @@ pub enum BvhBuilder {
     /// The crate's own binned surface-area-heuristic builder (`build.rs`),
     /// available without `std`.
     BinnedSah,
-    /// obvhs's PLOC builder with reinsertion and leaf collapse (`std`),
+    /// obvhs's PLOC builder with reinsertion and leaf collapse (the
+    /// `ploc` feature),
     /// run on a thread of its own with a stack sized for its recursion,
     /// falling back to [`BvhBuilder::BinnedSah`] for a tree deeper than
     /// the walk's stack, or where that thread cannot start or obvhs
     /// panics (see `ploc.rs`).
-    #[cfg(feature = "std")]
+    #[cfg(feature = "ploc")]
     Ploc(PlocQuality),
 }
 
@@ -319,7 +320,7 @@ impl TriangleMesh {
             .collect();
         let binary = match builder {
             BvhBuilder::BinnedSah => build::build(items),
-            #[cfg(feature = "std")]
+            #[cfg(feature = "ploc")]
             BvhBuilder::Ploc(quality) => {
                 ploc::build(&items, quality).unwrap_or_else(|| build::build(items))
             }
