@@ -5,7 +5,7 @@
 //
 //   cgal-timing DIR [--only family,family...]
 //
-// DIR holds what examples/report/export.rs writes: manifest.txt (how the
+// DIR holds what benches/src/bin/report/export.rs writes: manifest.txt (how the
 // report timed, and the classes), <family>-<inputs>.f64 (cases),
 // <family>-<inputs>.sign (exactray's answers) and times.txt (the report's
 // ns per case).
