@@ -1,4 +1,4 @@
-//! Criterion benchmarks for exam question Q2: the pixels of one triangle
+//! Criterion benchmarks for question Q2: the pixels of one triangle
 //! by rasterizing it and by casting one ray per pixel of its bounding box,
 //! beside the textbook rasterizer, at areas from 8 to about 10^5 pixels.
 //!

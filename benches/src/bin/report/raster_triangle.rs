@@ -1,4 +1,4 @@
-//! raster_triangle (exam question Q2): the pixels of one triangle found by
+//! raster_triangle (question Q2): the pixels of one triangle found by
 //! rasterizing it (`exactray`: `raster::rasterize_triangle`, edge functions
 //! stepped over the bounding box, exact at pixel centres, top-left rule)
 //! and by casting one ray per pixel of the same bounding box at the

@@ -1,4 +1,4 @@
-//! render (exam question Q2 at frame scale): one frame's primary
+//! render (question Q2 at frame scale): one frame's primary
 //! visibility, by the Z-buffer rasterizer (`exactray-raster`: every
 //! triangle clipped in homogeneous coordinates against the frustum,
 //! rasterized with exact coverage and the top-left rule, the nearest
