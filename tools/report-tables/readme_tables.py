@@ -6,7 +6,8 @@ the run's provenance, its targets and notes).
     python3 tools/report-tables/readme_tables.py target/report/report.json
     python3 tools/report-tables/readme_tables.py --check target/report/report.json
 
-Rewriting also copies the json and the report.md into docs/report-run/,
+Rewriting also copies the json, the report.md and its plots into
+docs/report-run/,
 the run the pages quote, which `.ci/run` checks them against.
 
 The pages mark what is generated with comment pairs,
@@ -457,12 +458,13 @@ def q2_summary(rep):
     lines = []
     tri = [(n, rays / r) for n, r, rays, _ in raster_rows(rep) if r and rays]
     if tri:
-        lines.append("- One triangle: one ray per pixel takes "
-                     + ", ".join(f"{x:.2g}x the rasterizer's time at {n:,} pixels" for n, x in tri) + ".")
+        lines.append("- One triangle, one ray per pixel against the rasterizer's time: "
+                     + ", ".join(f"{x:.2g}x at {n:,} pixels" for n, x in tri) + ".")
     frames = [(inputs, n / (w * h), rays / r) for inputs, w, h, n, r, rays, _ in render_rows(rep) if r and rays]
     if frames:
-        win = [f"`{i}` ({t:.2g} triangles per pixel: rays take {x:.2f}x)" for i, t, x in frames]
-        lines.append("- One frame (`W`x`H`:triangles): " + "; ".join(win) + ".")
+        win = [f"`{i}` ({t:.2g} triangles per pixel) {x:.2f}x" for i, t, x in frames]
+        lines.append("- One frame (`W`x`H`:triangles), one ray per pixel against the Z-buffer's time: "
+                     + "; ".join(win) + ".")
     differ = sum(row["errors"] for *_, row in render_rows(rep) if row)
     if frames:
         lines.append(f"- Pixels whose visible triangle differs between the two: {differ:,}.")
@@ -489,10 +491,40 @@ def targets(rep):
     return body
 
 
+BUDGET_NOTE = re.compile(r"^`([^`]+)` on `([^`]+)`(:| is timed)")
+
+
+def name_families(rep, paragraphs):
+    """The sign families' budget notes with their family named, where a run
+    wrote `method on `class`` only: a note that a method checked N cases
+    belongs to the family whose row has that method, class and count; a
+    note on its timing, to the family of the count note after it."""
+    out = list(paragraphs)
+    family_at = [None] * len(out)
+    for i, p in enumerate(out):
+        m = BUDGET_NOTE.match(p)
+        n = re.search(r": ([\d,]+) of ", p)
+        if m and n:
+            cases = int(n.group(1).replace(",", ""))
+            fams = {r["family"] for r in rep.rows if r["method"] == m.group(1) and r["inputs"] == m.group(2)
+                    and r["cases"] == cases and r["family"] in PREDICATES}
+            if len(fams) == 1:
+                family_at[i] = fams.pop()
+    for i in range(len(out) - 2, -1, -1):
+        m, nxt = BUDGET_NOTE.match(out[i]), BUDGET_NOTE.match(out[i + 1])
+        if m and nxt and family_at[i] is None and m.group(1, 2) == nxt.group(1, 2):
+            family_at[i] = family_at[i + 1]
+    for i, f in enumerate(family_at):
+        if f:
+            out[i] = BUDGET_NOTE.sub(lambda m: f"`{m.group(1)}` on {f}/`{m.group(2)}`{m.group(3)}", out[i], count=1)
+    return out
+
+
 def notes(rep):
     body = rep.section("Notes")
     if body is None:
         return "report.md has no notes."
+    body = "\n\n".join(name_families(rep, body.split("\n\n")))
     # The notes' own headings go one level down the page's.
     return re.sub(r"^(#+) ", lambda m: "#" * (len(m.group(1)) + 2) + " ", body, flags=re.M)
 
@@ -571,7 +603,8 @@ def main():
             print(f"{page}: rewrote {len(names)} blocks from {json_path}")
     if not args.check:
         KEPT.mkdir(exist_ok=True)
-        for src, name in [(json_path, "report.json"), (md_path, "report.md")]:
+        plots = [(svg, svg.name) for svg in sorted(json_path.parent.glob("*.svg"))]
+        for src, name in [(json_path, "report.json"), (md_path, "report.md")] + plots:
             dst = KEPT / name
             if src.exists() and src.resolve() != dst.resolve():
                 dst.write_text(src.read_text())

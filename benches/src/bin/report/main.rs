@@ -220,13 +220,13 @@ fn provenance(seconds: f64) -> String {
         _ => "unknown".to_string(),
     };
     format!(
-        "Run: `report{}{}`, {:.0} s wall time, commit {commit}.",
+        "Run: `report{}`{}, {:.0} s wall time, commit {commit}.",
+        args.iter().map(|a| format!(" {a}")).collect::<String>(),
         if cfg!(feature = "embree") {
-            " (embree feature)"
+            ", with the embree feature"
         } else {
             ""
         },
-        args.iter().map(|a| format!(" {a}")).collect::<String>(),
         seconds
     )
 }

@@ -106,9 +106,10 @@ impl<C: Coords> SignFamily<C> {
                     note(
                         self.name,
                         format!(
-                            "`{}` on `{}` is timed on the first {prefix} of the {working} cases the others are \
-                             timed on (about {:.0} µs a case).",
+                            "`{}` on {}/`{}` is timed on the first {prefix} of the {working} cases the \
+                             others are timed on (about {:.0} µs a case).",
                             m.name(),
+                            self.name,
                             class.name(),
                             per_case * 1e6
                         ),
@@ -118,8 +119,9 @@ impl<C: Coords> SignFamily<C> {
                     note(
                         self.name,
                         format!(
-                            "`{}` on `{}`: {} of {} cases checked within the {} s budget.",
+                            "`{}` on {}/`{}`: {} of {} cases checked within the {} s budget.",
                             m.name(),
+                            self.name,
                             class.name(),
                             answers.len(),
                             cases.len(),
