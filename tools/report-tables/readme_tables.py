@@ -145,13 +145,6 @@ class Report:
                 seen.append(r["inputs"])
         return seen
 
-    def methods(self, family):
-        seen = []
-        for r in self.rows:
-            if r["family"] == family and r["method"] not in seen:
-                seen.append(r["method"])
-        return seen
-
     def total(self, family, method):
         """(errors, cases) over every class of a family."""
         rs = [r for r in self.rows if r["family"] == family and r["method"] == method]

@@ -329,26 +329,10 @@ pub mod apfp {
     /// `apfp_signum!` on `det[b - a, c - a, d - a]`.
     #[inline]
     pub fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i8 {
-        let DVec3 {
-            x: ax,
-            y: ay,
-            z: az,
-        } = a;
-        let DVec3 {
-            x: bx,
-            y: by,
-            z: bz,
-        } = b;
-        let DVec3 {
-            x: cx,
-            y: cy,
-            z: cz,
-        } = c;
-        let DVec3 {
-            x: dx,
-            y: dy,
-            z: dz,
-        } = d;
+        let [ax, ay, az] = a.to_array();
+        let [bx, by, bz] = b.to_array();
+        let [cx, cy, cz] = c.to_array();
+        let [dx, dy, dz] = d.to_array();
         apfp_signum!(
             (bx - ax) * ((cy - ay) * (dz - az) - (cz - az) * (dy - ay))
                 - (by - ay) * ((cx - ax) * (dz - az) - (cz - az) * (dx - ax))
@@ -372,31 +356,11 @@ pub mod apfp {
     /// negated.
     #[inline]
     pub fn insphere(&[a, b, c, d, e]: &[DVec3; 5]) -> i8 {
-        let DVec3 {
-            x: ax,
-            y: ay,
-            z: az,
-        } = a;
-        let DVec3 {
-            x: bx,
-            y: by,
-            z: bz,
-        } = b;
-        let DVec3 {
-            x: cx,
-            y: cy,
-            z: cz,
-        } = c;
-        let DVec3 {
-            x: dx,
-            y: dy,
-            z: dz,
-        } = d;
-        let DVec3 {
-            x: ex,
-            y: ey,
-            z: ez,
-        } = e;
+        let [ax, ay, az] = a.to_array();
+        let [bx, by, bz] = b.to_array();
+        let [cx, cy, cz] = c.to_array();
+        let [dx, dy, dz] = d.to_array();
+        let [ex, ey, ez] = e.to_array();
         -(apfp_signum!(
             (square((dx - ex)) + square((dy - ey)) + square((dz - ez)))
                 * ((az - ez) * ((bx - ex) * (cy - ey) - (cx - ex) * (by - ey))
