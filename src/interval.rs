@@ -85,6 +85,12 @@ impl Interval {
     }
 }
 
+serde_by_constructor!(
+    Interval as "Interval" { min: f64, max: f64 },
+    parts: |i| (i.min, i.max),
+    build: |d| Interval::new(d.min, d.max),
+);
+
 #[cfg(test)]
 mod tests {
     use super::*;

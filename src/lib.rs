@@ -40,14 +40,60 @@
 //! ```
 //!
 //! Features: `std` (default; implies `alloc`), `rayon` (default; parallel
-//! batch queries and builds of the index), `alloc` (the [`bvh`] and [`scene`] modules),
-//! `proptest` (the strategies of [`testing`]), `arbitrary` (`Arbitrary` for
-//! the input types of [`testing`], for users' fuzz targets).
+//! batch queries and builds of the index), `alloc` (the [`bvh`] and
+//! [`scene`] modules), `ploc` (obvhs's PLOC builder for meshes, beside
+//! the default binned SAH one), `proptest` (the strategies of [`testing`]),
+//! `arbitrary` (`Arbitrary` for the input types of [`testing`], for users'
+//! fuzz targets), `serde` (`Serialize` and `Deserialize` for shapes, rays,
+//! intervals, hits, signs and meshes; types with invariants deserialize
+//! through their validating constructors), `mint` (mint's points and
+//! vectors accepted wherever glam's are).
 //!
 //! [`RayCast`]: query::ray::RayCast
 
 #[cfg(feature = "alloc")]
 extern crate alloc;
+
+/// `Serialize` and `Deserialize` (with the `serde` feature) for a type with
+/// invariants, as the arguments of its validating constructor: `parts`
+/// gives them from a value, `build` makes the value from them, so data
+/// that the constructor rejects is a deserialization error carrying its
+/// [`InputError`], never an invalid value.
+macro_rules! serde_by_constructor {
+    (
+        $ty:ident as $name:literal { $($field:ident: $fty:ty),* $(,)? },
+        parts: |$this:ident| $parts:expr,
+        build: |$data:ident| $build:expr $(,)?
+    ) => {
+        #[cfg(feature = "serde")]
+        impl serde::Serialize for $ty {
+            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                #[derive(serde::Serialize)]
+                #[serde(rename = $name)]
+                struct Data {
+                    $($field: $fty),*
+                }
+                let $this = self;
+                #[allow(unused_parens, reason = "one field is a parenthesized pattern")]
+                let ($($field),*) = $parts;
+                Data { $($field),* }.serialize(serializer)
+            }
+        }
+
+        #[cfg(feature = "serde")]
+        impl<'de> serde::Deserialize<'de> for $ty {
+            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                #[derive(serde::Deserialize)]
+                #[serde(rename = $name, deny_unknown_fields)]
+                struct Data {
+                    $($field: $fty),*
+                }
+                let $data = Data::deserialize(deserializer)?;
+                $build.map_err(serde::de::Error::custom)
+            }
+        }
+    };
+}
 #[cfg(feature = "std")]
 extern crate std;
 
@@ -72,7 +118,16 @@ pub use error::InputError;
 pub use point::{IntoDVec2, IntoDVec3};
 pub use sign::Sign;
 
-// The README's examples are compiled and run as doctests.
+// The examples of the README and of the guide and pictures pages are
+// compiled and run as doctests, so that they stay true.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
+
+#[cfg(doctest)]
+#[doc = include_str!("../docs/guide.md")]
+struct GuideDoctests;
+
+#[cfg(doctest)]
+#[doc = include_str!("../docs/pictures.md")]
+struct PicturesDoctests;

@@ -225,7 +225,7 @@ fn pruning_visits_far_fewer_points_than_brute_force() {
     println!(
         "{n} uniform points: {per_query:.1} distances and {nodes:.1} nodes per query (brute force: {n} distances)"
     );
-    // Brute force computes all n distances; the exam's prune keeps it to a
+    // Brute force computes all n distances; the prune keeps it to a
     // few leaves.
     assert!(
         per_query < n as f64 / 500.0,

@@ -1,7 +1,7 @@
 //! Homogeneous clipping and Z-buffer fragments against exact references:
 //! the pixel-centre ray against the clip-space triangle in big integers
 //! (barycentrics, visibility and depth), the perspective artifact of
-//! dividing before clipping (the exam's Q6), watertightness of a grid
+//! dividing before clipping (question Q6), watertightness of a grid
 //! mesh crossing the near plane, the clip weights' bound, bad input.
 
 use exactray::InputError;
@@ -226,7 +226,7 @@ fn check_triangle(v: [DVec4; 3], planes: ClipPlanes, width: u32, height: u32) ->
     checked
 }
 
-/// The exam's Q6: a floor triangle under the eye with one vertex behind it.
+/// Question Q6: a floor triangle under the eye with one vertex behind it.
 /// Dividing by `w` first wraps that vertex through infinity to the other
 /// side of the screen, and the 2D triangle covers pixels, at depths inside
 /// [0, 1], that the true triangle never reaches; clipping first leaves

@@ -1,7 +1,8 @@
 //! Checks the crate against fixtures whose expected answers come from CGAL's
 //! exact kernels: every file in `tests/fixtures/` (written by
 //! `tools/cgal-fixtures/regenerate.sh`) and, when the environment variable
-//! `EXACTRAY_EXTRA_FIXTURES` names a folder, every file there too.
+//! `EXACTRAY_EXTRA_FIXTURES` names a folder, every file there too. The
+//! files' format is `docs/fixture-format.md`.
 //!
 //! A file's kind is its name up to the first `-` or the `.txt`
 //! (`orient3d.txt`, `orient3d-near-degenerate.txt`). Each kind has one row in
@@ -75,7 +76,7 @@ struct Kind {
     /// checker are held to this, so that a malformed file fails even before
     /// its kind is checked.
     min_fields: usize,
-    /// Runs the crate's implementation; `None` until an issue implements it.
+    /// Runs the crate's implementation; `None` for a kind no checker covers yet.
     predicate: Option<Check>,
     /// Runs the exact oracle of `exactray-oracle` (`tests/oracle/src/oracle.rs`); agreement with
     /// CGAL validates the fixtures and the oracle against each other.

@@ -20,7 +20,7 @@ use exactray_oracle::line_oracle::{
 };
 use proptest::prelude::*;
 
-/// The tolerance the issue sets against the correctly rounded root.
+/// The tolerance the crate states against the correctly rounded root.
 const ULPS: u64 = 4;
 
 fn check(got: Roots, want: &LineAnswer, what: &str) -> Result<(), TestCaseError> {

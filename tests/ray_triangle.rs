@@ -617,13 +617,14 @@ fn triangle_validation() {
     assert_eq!(big.normal(), DVec3::Z);
 }
 
-/// Issue 12, a fuzzer finding: subnormal, tiny and huge coordinates in one
+/// A fuzzer finding: subnormal, tiny and huge coordinates in one
 /// case, and an exact `t` (about 2^1177) beyond `f64`'s range. The exact
 /// crossing lies outside the triangle (u about -834): a miss, which
 /// `cast_exact` once reported as a hit at `t = inf`.
 #[test]
 fn mixed_subnormal_and_huge_coordinates() {
-    let (o, d, v) = exactray::testing::ray_triangle_finding(0).expect("issue 12's finding");
+    let (o, d, v) =
+        exactray::testing::ray_triangle_finding(0).expect("the recorded fuzzer finding");
     for range in [
         Interval::FORWARD,
         Interval::new(f64::NEG_INFINITY, f64::INFINITY).unwrap(),
@@ -632,7 +633,7 @@ fn mixed_subnormal_and_huge_coordinates() {
     }
 }
 
-/// A fuzzer finding against the tests' own oracle (issue 12's runs): the
+/// A fuzzer finding against the tests' own oracle (the same runs): the
 /// exact `t` is `-f64::MAX (1 + 5e-100 u)`, beyond `f64`'s range by far less
 /// than half an ulp, so its correct rounding is `-f64::MAX` and a hit there
 /// is right; the oracle once demanded a miss for every `t` beyond the range.

@@ -1,12 +1,12 @@
 //! The two hierarchy builders give the same answers: a mesh built by
-//! obvhs's PLOC builder (`BvhBuilder::Ploc`, with `std`) answers every
+//! obvhs's PLOC builder (`BvhBuilder::Ploc`, the `ploc` feature) answers every
 //! closest-hit and shadow query as the mesh built by the binned builder
 //! does (which `tests/scene.rs` holds to a loop over every triangle), on
 //! tiled height fields and random soups, at tiny and huge scales and far
 //! from the origin, where the `f32` boxes obvhs builds over would collapse
 //! without the builder's rescaling; and meshes that PLOC cannot shape
 //! within the walk's stack (many identical triangles) still build.
-#![cfg(feature = "std")]
+#![cfg(feature = "ploc")]
 
 use exactray::interval::Interval;
 use exactray::query::ray::Watertight;

@@ -1,4 +1,4 @@
-//! The scene's exact rule (FORMAT.md's `ray_mesh`) against the
+//! The scene's exact rule (`docs/fixture-format.md`'s `ray_mesh`) against the
 //! brute-force exact oracle (`exactray_oracle::mesh_oracle`): rays lying in
 //! a triangle's plane hit where they enter it, the winner of a near tie is
 //! decided by the exact parameters (the lower index on exact ties), and

@@ -2,7 +2,7 @@
 //! planes (grazing primaries, far from the origin, tiny and huge scales)
 //! never re-hit the triangle they leave, where a fixed offset of `1e-8`
 //! does; a blocker a few ulps beyond the spawned origin is still found;
-//! and reflections about smooth shading normals (exam question Q3), which
+//! and reflections about smooth shading normals (question Q3), which
 //! go below the geometric surface when plain, never do with
 //! `reflect_above`.
 

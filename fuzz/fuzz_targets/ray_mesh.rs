@@ -1,5 +1,5 @@
 //! The scene's exact queries on small fuzzer-chosen meshes against brute
-//! force with the exact oracle (`exactray_oracle::mesh_oracle`, FORMAT.md's
+//! force with the exact oracle (`exactray_oracle::mesh_oracle`, `docs/fixture-format.md`'s
 //! `ray_mesh` rule): the exact closest hit (hit or miss, a triangle
 //! containing the exact first point, `t` within `EXACT_T_ULPS`), exact
 //! occlusion, and the exact shadow segment; the watertight queries must

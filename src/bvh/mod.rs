@@ -1,9 +1,9 @@
 //! A bounding-sphere hierarchy over points or balls, for exact nearest-item
-//! queries (exam question Q8): [`SphereBvh`].
+//! queries (question Q8 of `docs/pictures.md`): [`SphereBvh`].
 //!
 //! Every node holds a sphere that encloses its points; a query keeps the best
 //! distance `d` found so far and never descends into a node whose sphere
-//! cannot hold a closer point, `|c - q| - r >= d` (the exam's prune), visiting
+//! cannot hold a closer point, `|c - q| - r >= d` (the prune), visiting
 //! the nearer child first. For points, a second lower bound prunes too: the
 //! distance to the node's box, the intersection of the half-spaces of the
 //! median split planes above it (Arya and Mount's incremental distance).
@@ -107,6 +107,7 @@ pub const MAX_POINTS: usize = u32::MAX as usize;
 
 /// One answer of a nearest-point query.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Nearest {
     /// The point's position in the slice the index was built from.
     pub index: usize,

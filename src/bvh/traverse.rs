@@ -1,5 +1,5 @@
 //! The branch-and-bound walk every query shares: a stack, the nearer child
-//! first, and the exam's prune `|c - q| - r >= d` with a box bound beside
+//! first, and the prune `|c - q| - r >= d` with a box bound beside
 //! it, both made conservative.
 //!
 //! All distances of one query are computed on differences scaled by a power

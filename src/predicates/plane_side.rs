@@ -1,5 +1,5 @@
 //! Which side of a triangle's plane a point lies on, and whether two points
-//! lie on the same side (exam question Q7), decided exactly with
+//! lie on the same side (question Q7 of `docs/pictures.md`), decided exactly with
 //! [`orient3d`](super::orient3d).
 
 use super::{check_finite3, orient3d::orient3d};
@@ -9,6 +9,7 @@ use crate::sign::Sign;
 
 /// How two points lie with respect to a plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum SideRelation {
     /// Both strictly on the same side.
     Same,

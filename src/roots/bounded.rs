@@ -42,6 +42,7 @@ use crate::interval::Interval;
 /// lies in `[t - error, t + error]`. `error` is infinite where no bound
 /// could be certified (a `t` beyond `f64`'s range).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BoundedRoot {
     /// The parameter, rounded.
     pub t: f64,

@@ -35,6 +35,7 @@ pub use bounded::BoundedRoot;
 
 /// The real roots of a quadratic (or lower-degree) polynomial.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Roots {
     /// No real root.
     None,

@@ -46,7 +46,7 @@
 //!
 //! # The exact rule
 //! With [`Exact`] the triangles are closed sets and every decision is
-//! exact (FORMAT.md's `ray_mesh` rule): a ray lying in a triangle's plane
+//! exact (`docs/fixture-format.md`'s `ray_mesh` rule): a ray lying in a triangle's plane
 //! touches it along a segment and hits it where it enters (at the range's
 //! start when it starts inside; [`Triangle::cast_exact_closed`]); two hits
 //! whose certified parameters lie within their error of each other are
@@ -77,7 +77,7 @@
 
 mod batch;
 mod build;
-#[cfg(feature = "std")]
+#[cfg(feature = "ploc")]
 mod ploc;
 mod primitives;
 mod shading;
@@ -86,7 +86,7 @@ mod traverse;
 mod wide;
 
 pub use batch::BatchQueries;
-#[cfg(feature = "std")]
+#[cfg(feature = "ploc")]
 pub use ploc::PlocQuality;
 pub use primitives::{
     AnalyticShape, MAX_PRIMITIVES, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,
@@ -137,8 +137,8 @@ pub(crate) struct Node {
 
 const _: () = assert!(size_of::<Node>() == 56);
 
-/// What the PLOC builder (`ploc.rs`, with `std`) writes nodes with.
-#[cfg(feature = "std")]
+/// What the PLOC builder (`ploc.rs`, with `ploc`) writes nodes with.
+#[cfg(feature = "ploc")]
 impl Node {
     /// A box holding nothing (`min` above `max`), to grow.
     const EMPTY: Node = Node {
@@ -166,12 +166,13 @@ pub enum BvhBuilder {
     /// The crate's own binned surface-area-heuristic builder (`build.rs`),
     /// available without `std`.
     BinnedSah,
-    /// obvhs's PLOC builder with reinsertion and leaf collapse (`std`),
+    /// obvhs's PLOC builder with reinsertion and leaf collapse (the
+    /// `ploc` feature),
     /// run on a thread of its own with a stack sized for its recursion,
     /// falling back to [`BvhBuilder::BinnedSah`] for a tree deeper than
     /// the walk's stack, or where that thread cannot start or obvhs
     /// panics (see `ploc.rs`).
-    #[cfg(feature = "std")]
+    #[cfg(feature = "ploc")]
     Ploc(PlocQuality),
 }
 
@@ -232,6 +233,7 @@ pub struct TriangleMesh {
 
 /// The closest hit of a ray on a [`TriangleMesh`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeshHit {
     /// The index of the triangle hit, in the slice the mesh was built from.
     pub triangle: u32,
@@ -320,7 +322,7 @@ impl TriangleMesh {
             .collect();
         let binary = match builder {
             BvhBuilder::BinnedSah => build::build(items),
-            #[cfg(feature = "std")]
+            #[cfg(feature = "ploc")]
             BvhBuilder::Ploc(quality) => {
                 ploc::build(&items, quality).unwrap_or_else(|| build::build(items))
             }
@@ -715,6 +717,50 @@ impl RayCast for TriangleMesh {
     #[inline]
     fn hits(&self, ray: &Ray, range: Interval) -> bool {
         self.occluded(ray, range)
+    }
+}
+
+/// A mesh serializes as its vertices, triangles and shading normals (with
+/// the `serde` feature); its hierarchy is rebuilt, by the default builder,
+/// when it deserializes through [`TriangleMesh::new`] and
+/// [`TriangleMesh::with_normals`], so bad data is an [`InputError`].
+#[cfg(feature = "serde")]
+impl serde::Serialize for TriangleMesh {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(serde::Serialize)]
+        #[serde(rename = "TriangleMesh")]
+        struct Data<'a> {
+            vertices: &'a [DVec3],
+            triangles: &'a [[u32; 3]],
+            normals: Option<&'a [DVec3]>,
+        }
+        Data {
+            vertices: &self.vertices,
+            triangles: &self.triangles,
+            normals: self.normals.as_deref(),
+        }
+        .serialize(serializer)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for TriangleMesh {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        #[derive(serde::Deserialize)]
+        #[serde(rename = "TriangleMesh", deny_unknown_fields)]
+        struct Data {
+            vertices: Vec<DVec3>,
+            triangles: Vec<[u32; 3]>,
+            #[serde(default)]
+            normals: Option<Vec<DVec3>>,
+        }
+        let d = Data::deserialize(deserializer)?;
+        let mesh = TriangleMesh::new(&d.vertices, &d.triangles);
+        match d.normals {
+            Some(normals) => mesh.and_then(|m| m.with_normals(&normals)),
+            None => mesh,
+        }
+        .map_err(serde::de::Error::custom)
     }
 }
 

@@ -1,4 +1,4 @@
-//! The `std` builder of [`BinaryBvh`] through obvhs: PLOC (Meister and
+//! The `ploc` feature's builder of [`BinaryBvh`] through obvhs: PLOC (Meister and
 //! Bittner, "Parallel Locally-Ordered Clustering for Bounding Volume
 //! Hierarchy Construction", 2018) with reinsertion and leaf collapse, as
 //! obvhs's [`BvhBuildParams`] presets configure them.

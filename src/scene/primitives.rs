@@ -26,6 +26,7 @@ pub const MAX_PRIMITIVES: usize = 1 << 31;
 /// from 0 (what [`SceneBuilder::add`] returned), stable for the scene's
 /// life; index your own material tables with it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrimitiveId(pub u32);
 
 impl PrimitiveId {
@@ -39,6 +40,7 @@ impl PrimitiveId {
 /// An analytic shape of a scene, cast with its own [`RayCast`] (never
 /// tessellated).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum AnalyticShape {
     /// A sphere.
     Sphere(Sphere),
@@ -294,6 +296,7 @@ pub struct Scene {
 /// Where on a mesh's triangle a [`SceneHit`] lies (the parts of
 /// [`MeshHit`] beside its [`Hit`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TrianglePoint {
     /// The index of the triangle in its mesh ([`MeshHit::triangle`]).
     pub triangle: u32,
@@ -308,6 +311,7 @@ pub struct TrianglePoint {
 
 /// The closest hit of a ray in a [`Scene`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SceneHit {
     /// The primitive hit.
     pub primitive: PrimitiveId,

@@ -1,4 +1,4 @@
-//! Shading normals (exam question Q3): barycentric interpolation of
+//! Shading normals (question Q3 of `docs/pictures.md`): barycentric interpolation of
 //! vertex normals, and a reflection about a shading normal that never
 //! leaves towards the inside of the geometric surface.
 
@@ -37,7 +37,7 @@ fn certainly_above(r: DVec3, n: DVec3) -> bool {
 /// "Above" is the side of the geometric plane the ray came from: `side =
 /// -geometric` when the computed `d . geometric` is positive, `geometric`
 /// otherwise. Plain reflection about an interpolated normal can point
-/// below it (the exam's Q3: a coarse sphere with smooth normals sends
+/// below it (question Q3: a coarse sphere with smooth normals sends
 /// grazing reflections into the object). The rule, in order:
 ///
 /// 1. `r = reflect(d, shading)` when it is certainly above.

@@ -540,7 +540,7 @@ mod tests {
             triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
         }
         let mut builders = alloc::vec![super::super::BvhBuilder::BinnedSah];
-        #[cfg(feature = "std")]
+        #[cfg(feature = "ploc")]
         builders.push(super::super::BvhBuilder::Ploc(
             super::super::PlocQuality::Fast,
         ));

@@ -140,6 +140,12 @@ pub trait Bounded {
     fn aabb(&self) -> Option<Aabb>;
 }
 
+serde_by_constructor!(
+    Aabb as "Aabb" { min: DVec3, max: DVec3 },
+    parts: |b| (b.min, b.max),
+    build: |d| Aabb::new(d.min, d.max),
+);
+
 #[cfg(test)]
 mod tests {
     use super::*;

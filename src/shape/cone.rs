@@ -71,3 +71,13 @@ impl Cone {
         self.capped
     }
 }
+
+serde_by_constructor!(
+    Cone as "Cone" { apex: DVec3, axis: DVec3, radius: f64, capped: bool },
+    parts: |c| (c.apex, c.axis, c.radius, c.capped),
+    build: |d| if d.capped {
+        Cone::new(d.apex, d.axis, d.radius)
+    } else {
+        Cone::infinite(d.apex, d.axis, d.radius)
+    },
+);

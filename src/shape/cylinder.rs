@@ -7,7 +7,7 @@ use glam::DVec3;
 /// through `point` along `axis` (any non-zero length):
 /// `|(x - point) x axis|^2 = radius^2 |axis|^2`.
 ///
-/// The exam's cylinder `x^2 + z^2 = 1` (question Q1):
+/// The cylinder `x^2 + z^2 = 1` of question Q1 (`docs/pictures.md`):
 /// ```
 /// use exactray::shape::Cylinder;
 /// use exactray::query::ray::RayCast;
@@ -18,7 +18,7 @@ use glam::DVec3;
 /// let hit = cyl.cast(&ray, Interval::FORWARD).unwrap();
 /// assert_eq!((hit.t, hit.normal.to_array()), (2.0, [-1.0, 0.0, 0.0]));
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Cylinder {
     pub(crate) point: DVec3,
     pub(crate) axis: DVec3,
@@ -30,6 +30,16 @@ pub struct Cylinder {
     /// coordinates zero): the ray cast then drops that coordinate, which
     /// is exact, and solves a circle problem in the other two.
     pub(crate) aligned: Option<usize>,
+}
+
+/// Equal when the point, axis and radius are: what the cylinder caches
+/// from them may hold NaN (an overflowed `radius^2 |axis|^2`, which only
+/// sends its casts to the exact stage), and must not make a cylinder
+/// unequal to itself.
+impl PartialEq for Cylinder {
+    fn eq(&self, other: &Cylinder) -> bool {
+        (self.point, self.axis, self.radius) == (other.point, other.axis, other.radius)
+    }
 }
 
 impl Cylinder {
@@ -117,3 +127,15 @@ impl CappedCylinder {
         self.side
     }
 }
+
+serde_by_constructor!(
+    Cylinder as "Cylinder" { point: DVec3, axis: DVec3, radius: f64 },
+    parts: |c| (c.point, c.axis, c.radius),
+    build: |d| Cylinder::new(d.point, d.axis, d.radius),
+);
+
+serde_by_constructor!(
+    CappedCylinder as "CappedCylinder" { base: DVec3, axis: DVec3, radius: f64 },
+    parts: |c| (c.side.point, c.side.axis, c.side.radius),
+    build: |d| CappedCylinder::new(d.base, d.axis, d.radius),
+);

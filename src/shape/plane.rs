@@ -79,3 +79,15 @@ impl Disk {
         })
     }
 }
+
+serde_by_constructor!(
+    Plane as "Plane" { point: DVec3, normal: DVec3 },
+    parts: |p| (p.point, p.normal),
+    build: |d| Plane::new(d.point, d.normal),
+);
+
+serde_by_constructor!(
+    Disk as "Disk" { center: DVec3, normal: DVec3, radius: f64 },
+    parts: |k| (k.plane.point, k.plane.normal, k.radius),
+    build: |d| Disk::new(d.center, d.normal, d.radius),
+);

@@ -68,3 +68,9 @@ impl Quadric {
         )
     }
 }
+
+serde_by_constructor!(
+    Quadric as "Quadric" { coefficients: [f64; 10] },
+    parts: |q| q.k,
+    build: |d| Quadric::new(d.coefficients),
+);

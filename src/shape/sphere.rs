@@ -45,3 +45,9 @@ impl Sphere {
         self.radius
     }
 }
+
+serde_by_constructor!(
+    Sphere as "Sphere" { center: DVec3, radius: f64 },
+    parts: |s| (s.center, s.radius),
+    build: |d| Sphere::new(d.center, d.radius),
+);

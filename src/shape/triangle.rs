@@ -101,3 +101,9 @@ fn collinear(v: &[DVec3; 3]) -> bool {
     };
     plane(0, 1) == Sign::Zero && plane(1, 2) == Sign::Zero && plane(2, 0) == Sign::Zero
 }
+
+serde_by_constructor!(
+    Triangle as "Triangle" { vertices: [DVec3; 3] },
+    parts: |t| t.v,
+    build: |d| Triangle::new(d.vertices[0], d.vertices[1], d.vertices[2]),
+);

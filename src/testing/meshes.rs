@@ -348,7 +348,7 @@ pub fn cosine_direction(normal: DVec3, rng: &mut SplitMix64) -> DVec3 {
 /// A UV sphere of `rings` by `segments` quads (triangles at the poles, on
 /// the `z` axis), every triangle counterclockwise seen from outside, with
 /// the unit vertex normals of the exact sphere: coarse ones show how far
-/// interpolated normals lean from the facets' (the exam's Q3). `rings` is
+/// interpolated normals lean from the facets' (question Q3). `rings` is
 /// taken as at least 2 and `segments` as at least 3.
 pub fn uv_sphere(center: DVec3, radius: f64, rings: u32, segments: u32) -> SceneMesh {
     let (rings, segments) = (rings.max(2), segments.max(3));

@@ -1,5 +1,5 @@
 //! Deterministic triangles to rasterize, shared by the benchmarks and the
-//! speed-against-error report (exam question Q2): right isosceles
+//! speed-against-error report (question Q2 of `docs/pictures.md`): right isosceles
 //! triangles of a given area in pixels, rotated at random and placed at a
 //! random sub-pixel offset on a grid that holds them.
 //!

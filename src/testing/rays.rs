@@ -137,7 +137,7 @@ pub type RayTriangleBits = ([u64; 3], [u64; 3], [[u64; 3]; 3]);
 /// Fuzzer findings against the exact ray–triangle cast, as bit patterns
 /// (origin, direction, vertices): kept so every suite can replay them.
 ///
-/// - Issue 12: subnormal, tiny and huge coordinates in one case, a
+/// - A fuzzer finding: subnormal, tiny and huge coordinates in one case, a
 ///   direction whose largest coordinate is subnormal and an exact `t` near
 ///   `2^1177`; the filter's bound once underflowed to zero there.
 pub const RAY_TRIANGLE_FINDINGS: [RayTriangleBits; 1] = [(

@@ -1,6 +1,6 @@
 // Writes exactray's test fixtures: inputs chosen to be hard for floating
 // point, with the expected answers computed by CGAL's exact kernels.
-// The file format is described in FORMAT.md (one case per line, `#` comments;
+// The file format is described in docs/fixture-format.md (one case per line, `#` comments;
 // a nearest file holds one point set and its queries, see NearestSet).
 //
 // Usage: generate OUTDIR [KIND...]   (no KIND: every kind in KINDS below)

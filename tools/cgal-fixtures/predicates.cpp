@@ -116,7 +116,7 @@ int plane_side_naive(const double* v) {
 
 }  // namespace
 
-// Fails loudly if the kernels' conventions are not the ones FORMAT.md states.
+// Fails loudly if the kernels' conventions are not the ones docs/fixture-format.md states.
 void check_conventions() {
   const double l[6] = {0, 0, 1, 0, 0, 1};  // counterclockwise
   const double o[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};  // det(I) = 1

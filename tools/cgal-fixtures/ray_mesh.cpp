@@ -1,5 +1,5 @@
 // ray_mesh: one triangle mesh per file (ray_mesh-<name>.txt) with closest-hit
-// (r) and shadow-segment (s) queries against it, answered exactly (FORMAT.md's
+// (r) and shadow-segment (s) queries against it, answered exactly (`docs/fixture-format.md`'s
 // ray_mesh rule: closed triangles; a ray in a triangle's plane enters it).
 //
 // Every mesh is built on an integer lattice (coordinates X 2^e, |X| < 2^53, all

@@ -5,7 +5,7 @@
 //
 //   cgal-timing DIR [--only family,family...]
 //
-// DIR holds what examples/report/export.rs writes: manifest.txt (how the
+// DIR holds what benches/src/bin/report/export.rs writes: manifest.txt (how the
 // report timed, and the classes), <family>-<inputs>.f64 (cases),
 // <family>-<inputs>.sign (exactray's answers) and times.txt (the report's
 // ns per case).
@@ -79,7 +79,7 @@ P3 point_at<P3>(const double* c) {
 }
 
 // One predicate family: its point type, points per case and CGAL's answer
-// in FORMAT.md's sign conventions (which are CGAL's own).
+// in `docs/fixture-format.md`'s sign conventions (which are CGAL's own).
 struct Orient2d {
   using P = P2;
   static constexpr int N = 3;

@@ -65,7 +65,7 @@ def packed(mode: int, values) -> bytes:
 
 
 def triangle_cases(rng):
-    # Issue 12's finding, as reported.
+    # The ray-triangle fuzzer's finding (testing::ray_triangle_finding), as reported.
     finding = [0x0000000000001348, 0x482B488EB0A3BF00, 0x0000000025000048,
                0x0000000012000000, 0x0000000000000000, 0x000000D100000000,
                0x060000000A000000, 0x25FD166CFFD81300, 0x4848486840C729FE,

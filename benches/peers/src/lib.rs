@@ -1,5 +1,5 @@
-//! What exactray's speed-against-error report (`examples/report`) and its
-//! criterion benchmarks (`benches/`) both measure besides exactray's own
+//! What exactray's speed-against-error report and its criterion benchmarks
+//! (both in `exactray-bench`, `benches/`) measure besides exactray's own
 //! calls, in one copy: the textbook `f64` formulas (`naive`), the peer
 //! crates' calls in exactray's sign conventions, and the per-pixel ray
 //! cast of the rasterizing family. A workspace member of its own
@@ -11,6 +11,9 @@
 //! - [`nearest`]: building and querying `kiddo`'s and `rstar`'s indexes;
 //! - [`scene`]: obvhs's and parry3d's ray casts over a triangle mesh;
 //! - [`delaunay`]: spade's Delaunay triangulation.
+
+// `apfp_signum!` expands the in-sphere determinant by recursive macros.
+#![recursion_limit = "512"]
 
 pub mod delaunay;
 pub mod nearest;

@@ -1,6 +1,6 @@
-//! The exam's pictures on exactray's scene layer (issue 15): one
+//! The pictures of `docs/pictures.md` on exactray's scene layer: one
 //! Cornell-box-like room built in code ([`room`]), three renderers over it
-//! and the images that answer the exam's Q2–Q6.
+//! and the images that answer the graphics questions Q2–Q6.
 //!
 //! - [`zbuffer`]: a Z-buffer rasterizer on the crate's homogeneous
 //!   clipping (before the divide) and exact-coverage rasterization.

@@ -1,4 +1,4 @@
-//! The path tracer (exam Q4): diffuse interreflection, with next-event
+//! The path tracer (Q4): diffuse interreflection, with next-event
 //! estimation at every matte bounce (one shadow ray to a point sampled
 //! uniformly on the area light) and cosine-weighted bounces, Russian
 //! roulette after a few bounces, mirrors followed exactly. Each pixel's

@@ -6,7 +6,7 @@
 //! meshes (white floor, ceiling and back wall, red left wall, green right
 //! wall); inside stand a mirror sphere (analytic), a matte capped cylinder
 //! (analytic) and a coarse tessellated sphere with smooth vertex normals
-//! and a mirror finish: the exam's Q3 object. A small square light under
+//! and a mirror finish: the Q3 object. A small square light under
 //! the ceiling is the path tracer's emitter; the ray tracer lights the room
 //! with a point light just below it.
 

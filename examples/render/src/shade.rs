@@ -1,5 +1,5 @@
 //! What both tracers do at a hit: which way the surface faces the ray, and
-//! the mirror direction, plain (the exam's Q3 failure) or kept above the
+//! the mirror direction, plain (the Q3 failure) or kept above the
 //! surface by the crate's helper.
 
 use exactray::query::ray::Ray;

@@ -1,5 +1,5 @@
 //! The ray tracer (Whitted style): matte surfaces lit by the point light
-//! through one shadow ray each (exam Q5), mirrors followed by reflected
+//! through one shadow ray each (Q5), mirrors followed by reflected
 //! rays (Q3), every secondary ray spawned from the hit's certified point
 //! error (`spawn_ray`, `spawn_ray_to`): no epsilon anywhere.
 
@@ -44,7 +44,7 @@ pub struct RayCounts {
     pub shadow: u64,
     /// Mirror reflections that pointed below the geometric surface they
     /// leave (computed dot product with the side the ray came from not
-    /// positive): the exam's Q3 failure, zero with
+    /// positive): the Q3 failure, zero with
     /// [`Reflection::AboveSurface`].
     pub below_surface: u64,
 }

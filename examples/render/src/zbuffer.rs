@@ -1,5 +1,5 @@
 //! The Z-buffer rasterizer: every triangle taken to clip space, clipped
-//! against the frustum before the perspective divide (exam Q6), rasterized
+//! against the frustum before the perspective divide (Q6), rasterized
 //! with exact coverage and the top-left rule, the nearest fragment kept per
 //! pixel. Shading is local (Lambert under the point light, mirrors drawn
 //! grey): a rasterizer alone has no shadows and no reflections, which is
@@ -19,7 +19,7 @@ pub enum Clipping {
     Frustum,
     /// Not at all: every vertex divided by its `w`, even a negative one
     /// behind the eye, the 2D triangle rasterized, depth interpolated on
-    /// screen and fragments outside depth `[0, 1]` dropped. The exam's Q6
+    /// screen and fragments outside depth `[0, 1]` dropped. The Q6
     /// failure: a triangle reaching behind the eye is drawn inverted, at
     /// depths that look visible.
     None,

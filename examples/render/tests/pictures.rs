@@ -1,4 +1,4 @@
-//! The tests that pin the pictures down (issue 15, section 3): shadows,
+//! The tests that pin the pictures down: shadows,
 //! the furnace, reproducibility. The visibility comparison of the two
 //! renderers is in `visibility.rs`.
 

@@ -1,4 +1,4 @@
-//! Issue 15 §3, visibility: the Z-buffer rasterizer and the ray tracer
+//! Visibility: the Z-buffer rasterizer and the ray tracer
 //! (primary rays through pixel centres, the exact triangle variant) agree
 //! on the visible surface at every pixel of the room, drawn with triangles
 //! only (the analytic shapes replaced by their tessellations, so that both

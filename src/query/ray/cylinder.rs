@@ -41,7 +41,7 @@ impl Cylinder {
     /// use exactray::shape::Cylinder;
     /// use exactray::query::ray::Ray;
     /// use exactray::roots::Roots;
-    /// // The exam's cylinder x^2 + z^2 = 1 (Q1).
+    /// // The cylinder x^2 + z^2 = 1 of question Q1.
     /// let c = Cylinder::new([0.0, 0.0, 0.0], [0.0, 1.0, 0.0], 1.0).unwrap();
     /// let ray = Ray::new([0.0, 0.0, -3.0], [0.0, 1.0, 1.0]).unwrap();
     /// assert_eq!(c.line_roots(&ray), Roots::Two(2.0, 4.0));

@@ -88,6 +88,7 @@ impl Ray {
 
 /// Where a ray meets a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Hit {
     /// The ray parameter: the hit point is `origin + t * direction`.
     pub t: f64,
@@ -275,6 +276,12 @@ pub(crate) fn unit_or(v: DVec3, fallback: DVec3) -> DVec3 {
     let n = unit(v);
     if n != DVec3::ZERO { n } else { unit(fallback) }
 }
+
+serde_by_constructor!(
+    Ray as "Ray" { origin: DVec3, direction: DVec3 },
+    parts: |r| (r.origin, r.direction),
+    build: |d| Ray::new(d.origin, d.direction),
+);
 
 #[cfg(test)]
 mod ray_tests {

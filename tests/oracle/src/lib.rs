@@ -7,7 +7,7 @@
 //! - [`line_oracle`]: lines against spheres, cylinders, cones and general
 //!   quadrics: the exact root count and correctly rounded roots.
 //! - [`mesh_oracle`]: rays and segments against triangle meshes by brute
-//!   force (FORMAT.md's `ray_mesh` rule: closed triangles, a ray in a
+//!   force (`docs/fixture-format.md`'s `ray_mesh` rule: closed triangles, a ray in a
 //!   triangle's plane entering it).
 //!
 //! A workspace member of its own (`publish = false`), so that every user

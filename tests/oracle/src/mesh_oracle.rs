@@ -1,4 +1,4 @@
-//! Rays and segments against triangle meshes, exactly (FORMAT.md's
+//! Rays and segments against triangle meshes, exactly (`docs/fixture-format.md`'s
 //! `ray_mesh` rule): the closed triangles' common points with a line, as
 //! parameter intervals in big-integer fractions, by brute force over every
 //! triangle. Independent of the crate's arithmetic and of its method: the

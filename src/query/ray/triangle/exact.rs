@@ -551,7 +551,7 @@ fn barycentrics(w: [f64; 3], s: [Sign; 3], side: f64) -> (f64, f64) {
 }
 
 /// The filter's certified signs on directions whose largest coordinate
-/// is subnormal, and on the rays of issue 12's finding; an unfiltered ray
+/// is subnormal, and on the rays of a fuzzer finding; an unfiltered ray
 /// against a prepared one.
 #[cfg(test)]
 mod tests {
@@ -582,14 +582,14 @@ mod tests {
 
     /// Every sign the filter certifies is the exact one, on directions
     /// whose largest coordinate is subnormal (and their multiples by
-    /// `2^k`): issue 12's fuzzer finding, a huge and nearly flat triangle
+    /// `2^k`): a fuzzer finding, a huge and nearly flat triangle
     /// where an earlier filter's bound underflowed to zero and a wrong sign
     /// was certified; and a huge well-shaped triangle, whose signs the
     /// filter must still certify.
     #[test]
     fn certified_signs_are_exact_for_subnormal_directions() {
         let b = f64::from_bits;
-        let finding = crate::testing::ray_triangle_finding(0).expect("issue 12's finding");
+        let finding = crate::testing::ray_triangle_finding(0).expect("the recorded fuzzer finding");
         let big = pow2(200);
         let well_shaped = (
             DVec3::ZERO,

@@ -61,6 +61,7 @@ use watertight::Shear;
 /// Where a ray meets a triangle: the ray parameter and the barycentric
 /// coordinates of the hit point.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TriangleHit {
     /// The ray parameter: the hit is at `origin + t * direction`.
     pub t: f64,
@@ -275,7 +276,7 @@ impl Triangle {
     }
 
     /// [`Triangle::cast_exact`] under the closed-triangle rule of the
-    /// scene's exact queries (FORMAT.md's `ray_mesh`): the same answer for
+    /// scene's exact queries (`docs/fixture-format.md`'s `ray_mesh`): the same answer for
     /// every ray not lying in the triangle's plane, and for a ray in its
     /// plane (the three edge signs exactly zero), which touches the closed
     /// triangle along a segment, the hit where it enters it within `range`:
