@@ -539,6 +539,7 @@ mod tests {
             }
             triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
         }
+        #[cfg_attr(not(feature = "ploc"), allow(unused_mut))]
         let mut builders = alloc::vec![super::super::BvhBuilder::BinnedSah];
         #[cfg(feature = "ploc")]
         builders.push(super::super::BvhBuilder::Ploc(
