@@ -23,28 +23,29 @@ pub(crate) const SLACK: f64 = pow2(-700);
 /// product of three coordinates overflows.
 const MAX_MAGNITUDE: f64 = pow2(300);
 
-/// A vector's `x, y, z` and a zero: four lanes, which the compiler keeps
-/// in one register of the FMA kernel, so that each step below is one
-/// instruction for all three components.
-pub(crate) type Lanes = [f64; 4];
+/// A row of a determinant: a vector's `x, y, z` and a zero, four lanes
+/// which the compiler keeps in one register of the FMA kernel, so that
+/// each step below is one instruction for all three components.
+pub(crate) type Row = [f64; 4];
 
+/// `v` as a [`Row`].
 #[inline(always)]
-pub(crate) fn lanes(v: DVec3) -> Lanes {
+pub(crate) fn row(v: DVec3) -> Row {
     [v.x, v.y, v.z, 0.0]
 }
 
 /// `a - b` exactly, as a double-double `(hi, lo)` per lane
 /// ([`exact_difference`]).
 #[inline(always)]
-pub(crate) fn difference(a: DVec3, b: DVec3) -> (Lanes, Lanes) {
+pub(crate) fn difference(a: DVec3, b: DVec3) -> (Row, Row) {
     let (hi, lo) = exact_difference(a, b);
-    (lanes(hi), lanes(lo))
+    (row(hi), row(lo))
 }
 
 /// Whether every lane of `rows` is at most [`MAX_MAGNITUDE`] in magnitude:
 /// false where a difference overflowed (or for NaN).
 #[inline(always)]
-pub(crate) fn in_range(rows: &[Lanes]) -> bool {
+pub(crate) fn in_range(rows: &[Row]) -> bool {
     rows.iter()
         .flatten()
         .fold(true, |ok, x| ok & (x.abs() <= MAX_MAGNITUDE))
@@ -59,7 +60,7 @@ pub(crate) fn each<T>(f: impl Fn(usize) -> T) -> [T; 4] {
 /// Component `i` moved to lane `i - 1` (`j` of the cross product's `i, j,
 /// k`) or, with `K`, to lane `i - 2` (`k`); the zero stays in place.
 #[inline(always)]
-fn rotated<const K: bool>(v: Lanes) -> Lanes {
+fn rotated<const K: bool>(v: Row) -> Row {
     if K {
         [v[2], v[0], v[1], v[3]]
     } else {
@@ -71,9 +72,9 @@ fn rotated<const K: bool>(v: Lanes) -> Lanes {
 /// `|al| <= u |ah|` and `|bl| <= u |bh|` componentwise, with each
 /// component's permanent `P_i = |ah_j bh_k| + |ah_k bh_j|` (rounded).
 pub(crate) struct Normal {
-    pub hi: Lanes,
-    pub lo: Lanes,
-    pub perm: Lanes,
+    pub hi: Row,
+    pub lo: Row,
+    pub perm: Row,
 }
 
 /// [`Normal`]: `ah_j bh_k - ah_k bh_j` is exact as `hi_i` plus three error
@@ -83,7 +84,7 @@ pub(crate) struct Normal {
 /// P_i`. The dropped `al bl` terms add `u^2 P_i`: so `|hi_i + lo_i - n_i|
 /// <= 25 u^2 P_i` and `|lo_i| <= 4 u P_i`, to first order.
 #[inline(always)]
-pub(crate) fn cross_dd((ah, al): (Lanes, Lanes), (bh, bl): (Lanes, Lanes)) -> Normal {
+pub(crate) fn cross_dd((ah, al): (Row, Row), (bh, bl): (Row, Row)) -> Normal {
     let (ahj, ahk, alj, alk) = (
         rotated::<false>(ah),
         rotated::<true>(ah),
@@ -123,7 +124,7 @@ pub(crate) fn cross_dd((ah, al): (Lanes, Lanes), (bh, bl): (Lanes, Lanes)) -> No
 /// once more. So the result is within `u |value| + 61 u^2 Σ |xh_i| P_i` to
 /// first order.
 #[inline(always)]
-pub(crate) fn dot_dd(xh: Lanes, xl: Option<Lanes>, n: &Normal) -> (f64, f64) {
+pub(crate) fn dot_dd(xh: Row, xl: Option<Row>, n: &Normal) -> (f64, f64) {
     let h = each(|i| two_prod(xh[i], n.hi[i]));
     let lo = each(|i| {
         let lo = fma(xh[i], n.lo[i], h[i].1);
@@ -231,7 +232,7 @@ mod tests {
             let (o, d, [v0, v1, v2]) = case(&mut rng);
             let (w, e1, e2) = (difference(v0, o), difference(v1, v0), difference(v2, v0));
             let n = cross_dd(e1, e2);
-            let results = [dot_dd(lanes(d), None, &n), dot_dd(w.0, Some(w.1), &n)];
+            let results = [dot_dd(row(d), None, &n), dot_dd(w.0, Some(w.1), &n)];
             let all = [o, d, v0, v1, v2].map(|p| p.to_array()).concat();
             let lo = all.iter().map(|&x| parts(x).1).min().unwrap();
             let int = |p: DVec3| p.to_array().map(|x| at(x, lo));

@@ -1,4 +1,5 @@
-//! The ground floor: number machinery only, no geometry. Error-free
+//! Floor 1, above the vocabulary of floor 0 (errors, signs, points,
+//! intervals): number machinery only, no geometry. Error-free
 //! transformations, the FMA and its runtime dispatch, the unit roundoff,
 //! exponents and scaling by powers of two, values of unbounded exponent,
 //! fixed-capacity stack integers, double-double rows, sparse exact sums and

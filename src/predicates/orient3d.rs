@@ -104,19 +104,15 @@ fn semi_declined(
             Err(permanent) => permanent,
         },
     };
-    stages_2_to_5(a, b, c, d, permanent)
+    stages_2_to_5(&[a, b, c, d], permanent)
 }
 
-/// Stages 2 to 5 for an input stage 1 declined, given its permanent (the
-/// batch variant's entry for lanes whose determinant is not zero).
+/// Stages 2 to 5 for an input stage 1 declined, given its permanent, out
+/// of line (the batch variant's entry for lanes whose determinant is not
+/// zero).
 #[inline(never)]
 pub(super) fn declined(p: &[DVec3; 4], permanent: f64) -> Sign {
-    if in_range(permanent)
-        && let Some(sign) = unit_integer(p)
-    {
-        return sign;
-    }
-    exact(p, in_range(permanent))
+    stages_2_to_5(p, permanent)
 }
 
 /// The whole ladder, out of line (the batch variant's entry for lanes whose
@@ -126,17 +122,16 @@ pub(super) fn from_the_start(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Sign {
     orient3d(a, b, c, d)
 }
 
-/// The quick integer entry (`unit_integer`), which answers almost every
-/// in-range input that reaches it, then the cold ladder.
+/// Stages 2 to 5: the quick integer entry (`unit_integer`), which answers
+/// almost every in-range input that reaches it, then the cold ladder.
 #[inline(always)]
-fn stages_2_to_5(a: DVec3, b: DVec3, c: DVec3, d: DVec3, permanent: f64) -> Sign {
-    let p = [a, b, c, d];
+fn stages_2_to_5(p: &[DVec3; 4], permanent: f64) -> Sign {
     if in_range(permanent)
-        && let Some(sign) = unit_integer(&p)
+        && let Some(sign) = unit_integer(p)
     {
         return sign;
     }
-    exact(&p, in_range(permanent))
+    exact(p, in_range(permanent))
 }
 
 /// Stage 0, the semi-static filter: stage 1's determinant with a bound

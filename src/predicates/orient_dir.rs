@@ -8,7 +8,7 @@
 
 use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
 use super::sparse;
-use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, lanes};
+use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, row};
 use crate::arith::exponent::{Grain, to_integer_i64};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
@@ -62,7 +62,7 @@ impl FmaKernel for DoubleDouble {
     #[inline(always)]
     fn run(&self) -> Option<Sign> {
         let (a, e) = (difference(self.p, self.o), difference(self.q, self.p));
-        let d = lanes(self.d);
+        let d = row(self.d);
         if !in_range(&[a.0, e.0, d]) {
             return None;
         }

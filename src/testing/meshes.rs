@@ -13,8 +13,8 @@
 //! assert_eq!(rays.len(), 16);
 //! ```
 
-use super::float::{cos, sin, sqrt};
 use super::generators::SplitMix64;
+use crate::arith::std_or_libm::{cos, sin, sqrt};
 use alloc::vec;
 use alloc::vec::Vec;
 use core::f64::consts::PI;

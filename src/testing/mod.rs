@@ -43,7 +43,6 @@
 //! ```
 
 mod cases;
-mod float;
 mod generators;
 #[cfg(feature = "alloc")]
 mod meshes;

@@ -13,8 +13,8 @@
 //! assert!(pixels.abs_diff(128) < 40);
 //! ```
 
-use super::float::{cos, sin, sqrt};
 use super::generators::SplitMix64;
+use crate::arith::std_or_libm::{cos, sin, sqrt};
 use glam::DVec2;
 
 /// One triangle on a grid that holds it.

@@ -14,8 +14,8 @@
 //! assert_eq!((points.len(), queries.len()), (1000, 10));
 //! ```
 
-use super::float::{cbrt, ceil, cos, ln, powf, sqrt};
 use super::generators::{SplitMix64, step_ulps};
+use crate::arith::std_or_libm::{cbrt, ceil, cos, ln, powf, sqrt};
 use glam::DVec3;
 
 /// How the points of a nearest-point search and its queries are drawn.

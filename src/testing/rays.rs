@@ -25,8 +25,8 @@
 //! }
 //! ```
 
-use super::float::{cos, powf, round, sin, sqrt};
 use super::generators::{SplitMix64, pow2, step_ulps};
+use crate::arith::std_or_libm::{cos, powf, round, sin, sqrt};
 use glam::DVec3;
 
 /// Uniform in `[lo, hi)`.

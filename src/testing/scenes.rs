@@ -15,9 +15,9 @@
 //! let _ = scene.closest_hit(&ray, Interval::FORWARD);
 //! ```
 
-use super::float::{powf, sqrt};
 use super::generators::SplitMix64;
 use super::rays::{point, point_in_triangle, uniform, unit_vector};
+use crate::arith::std_or_libm::{powf, sqrt};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
 use crate::scene::{

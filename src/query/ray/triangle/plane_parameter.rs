@@ -10,7 +10,7 @@
 //!
 //! Either way the quotient is within `4 u` (`u = 2^-53`) of the exact `t`.
 
-use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, lanes};
+use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, row};
 use crate::arith::exponent::{pow2, to_integer_i64};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
@@ -64,11 +64,11 @@ impl FmaKernel for FilteredParameter<'_> {
         let [v0, v1, v2] = *self.v;
         let (o, d) = (self.ray.origin(), self.ray.direction());
         let (w, e1, e2) = (difference(v0, o), difference(v1, v0), difference(v2, v0));
-        if !in_range(&[w.0, e1.0, e2.0, lanes(d)]) {
+        if !in_range(&[w.0, e1.0, e2.0, row(d)]) {
             return None;
         }
         let n = cross_dd(e1, e2);
-        let (den, den_perm) = dot_dd(lanes(d), None, &n);
+        let (den, den_perm) = dot_dd(row(d), None, &n);
         let (num, num_perm) = dot_dd(w.0, Some(w.1), &n);
         // Each determinant within 1.45 u of its value: the u^2 terms and
         // the slack within 0.45 u of its magnitude.
