@@ -11,6 +11,7 @@
 
 use super::error_free::{exact_difference, two_prod, two_sum};
 use super::exponent::pow2;
+use super::roundoff::U;
 use super::std_or_libm::fma;
 use glam::DVec3;
 
@@ -140,10 +141,127 @@ pub(crate) fn dot_dd(xh: Row, xl: Option<Row>, n: &Normal) -> (f64, f64) {
     (s2 + lo, perm)
 }
 
+/// An unevaluated double-double `hi + lo`: the one pair type of the
+/// double-double evaluations (the cone's and the sphere's precise tiers;
+/// the determinant rows above are its four-lane form). Each operation
+/// states what it rounds; none renormalizes unless it says so.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct DoubleDouble {
+    pub hi: f64,
+    pub lo: f64,
+}
+
+impl DoubleDouble {
+    /// `a + b` exactly (TwoSum; Higham, *Accuracy and Stability*, 2nd ed.,
+    /// §4.3), for a sum that does not overflow: `hi = fl(a + b)`.
+    #[inline(always)]
+    pub(crate) fn sum(a: f64, b: f64) -> DoubleDouble {
+        let (hi, lo) = two_sum(a, b);
+        DoubleDouble { hi, lo }
+    }
+
+    /// `a b` exactly (TwoProduct, one FMA), unless the product underflows
+    /// (then off by at most `2^-1075`) or overflows: `hi = fl(a b)`.
+    #[inline(always)]
+    pub(crate) fn product(a: f64, b: f64) -> DoubleDouble {
+        let (hi, lo) = two_prod(a, b);
+        DoubleDouble { hi, lo }
+    }
+
+    /// The pair renormalized, exactly (TwoSum): `|lo| <= u |hi|` after.
+    #[inline(always)]
+    pub(crate) fn renormalized(self) -> DoubleDouble {
+        DoubleDouble::sum(self.hi, self.lo)
+    }
+
+    /// The square: `hi^2` exactly as a pair (TwoProduct), its low part
+    /// with `2 hi lo` in one FMA. Rounds once (`u` of the low part) and
+    /// drops `lo^2`. Not normalized.
+    #[inline(always)]
+    pub(crate) fn square(self) -> DoubleDouble {
+        let q = DoubleDouble::product(self.hi, self.hi);
+        DoubleDouble {
+            hi: q.hi,
+            lo: fma(2.0 * self.hi, self.lo, q.lo),
+        }
+    }
+
+    /// The product: `hi hi'` exactly as a pair, the cross terms added to
+    /// its low part by two FMAs. Rounds twice (each within `u` of the
+    /// partial low part) and drops `lo lo'`. Not normalized.
+    #[inline(always)]
+    pub(crate) fn times(self, x: DoubleDouble) -> DoubleDouble {
+        let p = DoubleDouble::product(self.hi, x.hi);
+        DoubleDouble {
+            hi: p.hi,
+            lo: fma(self.hi, x.lo, fma(self.lo, x.hi, p.lo)),
+        }
+    }
+
+    /// The product by an `f64`: `hi a` exactly as a pair, `lo a` added to
+    /// its low part by one FMA. Rounds once. Not normalized.
+    #[inline(always)]
+    pub(crate) fn times_f64(self, a: f64) -> DoubleDouble {
+        let p = DoubleDouble::product(self.hi, a);
+        DoubleDouble {
+            hi: p.hi,
+            lo: fma(self.lo, a, p.lo),
+        }
+    }
+
+    /// The sum of three: the high parts exactly (TwoSum), the five
+    /// low-order terms in a tree of depth three (three roundings on any
+    /// term's path). Not normalized.
+    #[inline(always)]
+    pub(crate) fn sum3([x, y, z]: [DoubleDouble; 3]) -> DoubleDouble {
+        let s1 = DoubleDouble::sum(x.hi, y.hi);
+        let s2 = DoubleDouble::sum(s1.hi, z.hi);
+        DoubleDouble {
+            hi: s2.hi,
+            lo: (x.lo + y.lo) + (z.lo + (s1.lo + s2.lo)),
+        }
+    }
+
+    /// `self - x` rounded to one `f64`: the high parts exactly (TwoSum),
+    /// the low-order terms with two roundings, the result once more.
+    #[inline(always)]
+    pub(crate) fn minus(self, x: DoubleDouble) -> f64 {
+        let f = DoubleDouble::sum(self.hi, -x.hi);
+        f.hi + ((self.lo - x.lo) + f.lo)
+    }
+
+    /// `|hi| + |lo|`.
+    #[inline(always)]
+    pub(crate) fn magnitude(self) -> f64 {
+        self.hi.abs() + self.lo.abs()
+    }
+}
+
+/// A double-double within `err` of the exact value it stands for.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Approximate {
+    pub value: DoubleDouble,
+    pub err: f64,
+}
+
+impl Approximate {
+    /// The square ([`DoubleDouble::square`]) with its bound: the low
+    /// part's one rounding (`u` of it), the dropped `lo^2`, and the error
+    /// `δ` carried through `(v + δ)^2 - v^2 = δ (2 v + δ)`.
+    #[inline(always)]
+    pub(crate) fn square(self) -> Approximate {
+        let (v, e) = (self.value, self.err);
+        let sq = v.square();
+        Approximate {
+            value: sq,
+            err: U * sq.lo.abs() + v.lo * v.lo + e * (2.0 * v.magnitude() + e),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::arith::roundoff::U;
     use crate::testing::{SplitMix64, step_ulps};
     use num_bigint::BigInt;
 

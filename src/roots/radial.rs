@@ -13,7 +13,7 @@
 //! to `|w|`.
 
 use super::certified::{Coeffs, ETA, Polynomial, Question, in_filter_range, norm1};
-use crate::arith::error_free::{two_prod, two_sum};
+use crate::arith::double_double::DoubleDouble;
 use crate::arith::roundoff::{U, gamma};
 use crate::arith::std_or_libm::fma;
 use glam::DVec3;
@@ -144,8 +144,8 @@ impl<const INEXACT: bool> Polynomial for Circle<INEXACT> {
         let mut lo_mag = 0.0;
         let mut e = self.err;
         for (i, square) in hi.iter_mut().take(3).enumerate() {
-            let (ph, pl) = two_prod(t, self.dh[i]);
-            let (sh, sl) = two_sum(self.wh[i], ph);
+            let DoubleDouble { hi: ph, lo: pl } = DoubleDouble::product(t, self.dh[i]);
+            let DoubleDouble { hi: sh, lo: sl } = DoubleDouble::sum(self.wh[i], ph);
             // x_i = sh + lo, lo from three low-order terms, two roundings.
             let (tail, mut e_lo) = if INEXACT {
                 let tdl = t * self.dl[i];
@@ -161,8 +161,7 @@ impl<const INEXACT: bool> Polynomial for Circle<INEXACT> {
             };
             let lo = sl + tail;
             e_lo += U * lo.abs() + 2.0 * ETA;
-            let (qh, ql) = two_prod(sh, sh);
-            let cross = fma(2.0 * sh, lo, ql);
+            let DoubleDouble { hi: qh, lo: cross } = DoubleDouble { hi: sh, lo }.square();
             *square = qh;
             lo_sum += cross;
             lo_mag += cross.abs();
@@ -171,9 +170,9 @@ impl<const INEXACT: bool> Polynomial for Circle<INEXACT> {
             e += lo * lo + 2.0 * (sh.abs() + lo.abs()) * e_lo + e_lo * e_lo + U * cross.abs();
         }
         hi[3] = -self.rh;
-        let (s1, e1) = two_sum(hi[0], hi[1]);
-        let (s2, e2) = two_sum(s1, hi[2]);
-        let (s3, e3) = two_sum(s2, hi[3]);
+        let DoubleDouble { hi: s1, lo: e1 } = DoubleDouble::sum(hi[0], hi[1]);
+        let DoubleDouble { hi: s2, lo: e2 } = DoubleDouble::sum(s1, hi[2]);
+        let DoubleDouble { hi: s3, lo: e3 } = DoubleDouble::sum(s2, hi[3]);
         let tail = lo_sum + ((e1 + e2) + e3) - self.rl;
         let p = s3 + tail;
         // The tail sums 7 terms: at most 7 roundings of partial sums, each
@@ -195,7 +194,7 @@ pub(crate) fn circle_of<Q: Question>(
     r: f64,
     q: Q,
 ) -> Option<Q::Answer> {
-    let (rh, rl) = two_prod(r, r);
+    let DoubleDouble { hi: rh, lo: rl } = DoubleDouble::product(r, r);
     let (nw, nd) = (norm1(wh), norm1(d));
     let a = nd * nd;
     if !(in_filter_range(a) && in_filter_range(nw * nd) && in_filter_range(rh * a)) {
@@ -220,15 +219,15 @@ pub(crate) fn circle_of<Q: Question>(
 /// squares and the high parts' sums by error-free transformations, the
 /// low-order terms rounding within a few units of their magnitudes.
 pub(crate) fn scaled_square(r: f64, a: DVec3) -> (f64, f64, f64) {
-    let (r2h, r2l) = two_prod(r, r);
-    let (q0, l0) = two_prod(a.x, a.x);
-    let (q1, l1) = two_prod(a.y, a.y);
-    let (q2, l2) = two_prod(a.z, a.z);
-    let (s1, f1) = two_sum(q0, q1);
-    let (ah, f2) = two_sum(s1, q2);
+    let DoubleDouble { hi: r2h, lo: r2l } = DoubleDouble::product(r, r);
+    let DoubleDouble { hi: q0, lo: l0 } = DoubleDouble::product(a.x, a.x);
+    let DoubleDouble { hi: q1, lo: l1 } = DoubleDouble::product(a.y, a.y);
+    let DoubleDouble { hi: q2, lo: l2 } = DoubleDouble::product(a.z, a.z);
+    let DoubleDouble { hi: s1, lo: f1 } = DoubleDouble::sum(q0, q1);
+    let DoubleDouble { hi: ah, lo: f2 } = DoubleDouble::sum(s1, q2);
     let al = (l0 + l1 + l2) + (f1 + f2);
     let e_al = 5.0 * U * (l0.abs() + l1.abs() + l2.abs() + f1.abs() + f2.abs()) + 4.0 * ETA;
-    let (ph, pl) = two_prod(r2h, ah);
+    let DoubleDouble { hi: ph, lo: pl } = DoubleDouble::product(r2h, ah);
     let (m1, m2) = (r2h * al, r2l * ah);
     let lo = pl + (m1 + m2);
     // r^2 = r2h + r2l to within ETA (exact unless r^2 underflows); that

@@ -3,7 +3,8 @@
 
 use super::point_error::dot_error;
 use super::{Hit, Precise, RayCast, hit_at, unit_or};
-use crate::arith::error_free::{exact_difference, two_prod, two_sum};
+use crate::arith::double_double::DoubleDouble;
+use crate::arith::error_free::exact_difference;
 use crate::arith::exponent::{Grain, unit_pow2};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
@@ -139,9 +140,9 @@ fn cross_dd(wh: DVec3, wl: DVec3, a: DVec3) -> (DVec3, DVec3, DVec3) {
     let (mut hi, mut lo, mut err) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
     for k in 0..3 {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        let (p1, e1) = two_prod(wh[i], a[j]);
-        let (p2, e2) = two_prod(wh[j], a[i]);
-        let (s, es) = two_sum(p1, -p2);
+        let DoubleDouble { hi: p1, lo: e1 } = DoubleDouble::product(wh[i], a[j]);
+        let DoubleDouble { hi: p2, lo: e2 } = DoubleDouble::product(wh[j], a[i]);
+        let DoubleDouble { hi: s, lo: es } = DoubleDouble::sum(p1, -p2);
         let (l1, l2) = (wl[i] * a[j], wl[j] * a[i]);
         let tail = es + (e1 - e2) + (l1 - l2);
         hi[k] = s;

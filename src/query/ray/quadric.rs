@@ -1,7 +1,7 @@
 //! Ray against [`Quadric`]: exact root count, accurate roots.
 
 use super::{Hit, Precise, RayCast, hit_at, unit_or};
-use crate::arith::error_free::{two_prod, two_sum};
+use crate::arith::double_double::DoubleDouble;
 use crate::arith::exponent::{Grain, pow2};
 use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
@@ -179,8 +179,8 @@ impl Polynomial for Line {
         let (m, o, d) = (&self.m, self.o, self.d);
         let (mut xh, mut xl, mut ex) = ([1.0; 4], [0.0; 4], [0.0; 4]);
         for i in 0..3 {
-            let (ph, pl) = two_prod(t, d[i]);
-            let (sh, sl) = two_sum(o[i], ph);
+            let DoubleDouble { hi: ph, lo: pl } = DoubleDouble::product(t, d[i]);
+            let DoubleDouble { hi: sh, lo: sl } = DoubleDouble::sum(o[i], ph);
             xh[i] = sh;
             xl[i] = sl + pl;
             ex[i] = U * xl[i].abs() + 2.0 * ETA;
@@ -189,11 +189,11 @@ impl Polynomial for Line {
         for i in 0..4 {
             for j in i..4 {
                 let w = if i == j { m[i][j] } else { 2.0 * m[i][j] };
-                let (h, l) = two_prod(xh[i], xh[j]);
-                let (big, big_l) = two_prod(w, h);
+                let DoubleDouble { hi: h, lo: l } = DoubleDouble::product(xh[i], xh[j]);
+                let DoubleDouble { hi: big, lo: big_l } = DoubleDouble::product(w, h);
                 let mixed = l + xh[i] * xl[j] + xl[i] * xh[j];
                 let low = big_l + w * mixed;
-                let (s2, se) = two_sum(s, big);
+                let DoubleDouble { hi: s2, lo: se } = DoubleDouble::sum(s, big);
                 s = s2;
                 tail += low + se;
                 let mixed_mag = l.abs() + (xh[i] * xl[j]).abs() + (xl[i] * xh[j]).abs();
