@@ -1,5 +1,6 @@
 #![no_std]
 #![deny(missing_docs)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 //! # exactray
 //!
 //! Geometric queries that are fast and right: every answer that can be
@@ -22,8 +23,9 @@
 //!   and scenes of meshes and analytic shapes over a two-level one:
 //!   closest hits, shadow rays, batches of both, secondary rays that never
 //!   hit their own surface, reflections that stay above it.
-//! - [`testing`]: hard inputs, proptest strategies and `Arbitrary` input
-//!   types for users' own tests; [`prelude`]: the vocabulary in one `use`.
+//! - `testing` (with the `testing` feature): hard inputs, proptest
+//!   strategies and `Arbitrary` input types for users' own tests;
+//!   [`prelude`]: the vocabulary in one `use`.
 //!
 //! A speed-against-error report measures all of it beside the crates a
 //! user would otherwise pick (see the README).
@@ -42,9 +44,10 @@
 //! Features: `std` (default; implies `alloc`), `rayon` (default; parallel
 //! batch queries and builds of the index), `alloc` (the [`bvh`] and
 //! [`scene`] modules), `ploc` (obvhs's PLOC builder for meshes, beside
-//! the default binned SAH one), `proptest` (the strategies of [`testing`]),
-//! `arbitrary` (`Arbitrary` for the input types of [`testing`], for users'
-//! fuzz targets), `serde` (`Serialize` and `Deserialize` for shapes, rays,
+//! the default binned SAH one), `testing` (the `testing` module's hard
+//! inputs and generators, for test suites), `proptest` (its strategies;
+//! implies `testing`), `arbitrary` (`Arbitrary` for its input types, for
+//! fuzz targets; implies `testing`), `serde` (`Serialize` and `Deserialize` for shapes, rays,
 //! intervals, hits, signs and meshes; types with invariants deserialize
 //! through their validating constructors), `mint` (mint's points and
 //! vectors accepted wherever glam's are).
@@ -112,6 +115,8 @@ pub mod roots;
 pub mod scene;
 pub mod shape;
 mod sign;
+#[cfg(any(test, feature = "testing"))]
+#[cfg_attr(docsrs, doc(cfg(feature = "testing")))]
 pub mod testing;
 
 pub use error::InputError;

@@ -205,12 +205,44 @@ impl Tree {
             .find_map(|n| self.files.get_key_value(&path[..n]).map(|(k, _)| k))
     }
 
+    /// The modules of files declared under `#[cfg(test)]` in their
+    /// parent (`#[cfg(test)] mod tests;`): test code, as a `#[cfg(test)]`
+    /// block inside a file is.
+    fn test_files(&self) -> BTreeSet<Vec<String>> {
+        let mut tests = BTreeSet::new();
+        for (module, file) in &self.files {
+            let text = std::fs::read_to_string(file).expect("a source file");
+            let mut pending = false;
+            for line in text.lines().map(str::trim) {
+                if line.starts_with("#[cfg(test)]") {
+                    pending = true;
+                    continue;
+                }
+                if pending
+                    && let Some(name) = line.strip_prefix("mod ").and_then(|r| r.strip_suffix(';'))
+                {
+                    let mut child = module.clone();
+                    child.push(name.trim().to_string());
+                    tests.insert(child);
+                }
+                pending = false;
+            }
+        }
+        tests
+    }
+
     /// Each file's module and the modules (files) its library code refers to.
     fn edges(&self) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
         let mut edges = BTreeMap::new();
+        let tests = self.test_files();
         for (module, file) in &self.files {
             let text = std::fs::read_to_string(file).expect("a source file");
-            let code = library_code(&text);
+            let is_test = (1..=module.len()).any(|n| tests.contains(&module[..n]));
+            let code = if is_test {
+                String::new()
+            } else {
+                library_code(&text)
+            };
             let mut to = BTreeSet::new();
             for path in references(&code, module) {
                 if let Some(target) = self.file_of(&path)
