@@ -9,7 +9,7 @@
 //! `2^-1075`, which the bounds absorb).
 
 use super::sphere::UNDERFLOW_DISTANCE;
-use super::{Child, Counter, LEAF, Lanes, SphereBvh, Spheres, first_part, sqrt};
+use super::{Child, Counter, LEAF, Lanes, Node, SphereBvh, Spheres, first_part, sqrt};
 use crate::arith::exponent::unit_pow2;
 use crate::arith::roundoff::U;
 use glam::DVec3;
@@ -104,6 +104,28 @@ struct Subtree {
     count: u32,
 }
 
+impl Subtree {
+    /// The two children of this internal subtree, `node` its node: the
+    /// first part of its points in the next node, the rest at
+    /// `node.right`.
+    #[inline(always)]
+    fn children(self, node: &Node) -> [Subtree; 2] {
+        let half = first_part(self.count as usize) as u32;
+        [
+            Subtree {
+                at: self.at + 1,
+                start: self.start,
+                count: half,
+            },
+            Subtree {
+                at: node.right,
+                start: self.start + half,
+                count: self.count - half,
+            },
+        ]
+    }
+}
+
 /// Computed squared scaled distance from `q` to the centre of child `k` of
 /// `node`, and the child's scaled radius.
 #[inline(always)]
@@ -115,6 +137,28 @@ fn child_sphere(node: &Spheres, k: usize, q: DVec3, s: f64) -> (f64, f64) {
     );
     (dx * dx + dy * dy + dz * dz, node.r[k] * s)
 }
+
+/// An empty stack slot of [`walk`].
+const NO_PENDING: Pending = Pending {
+    parent: 0,
+    k: 0,
+    child: Subtree {
+        at: 0,
+        start: 0,
+        count: 0,
+    },
+    box2: 0.0,
+    off: [0.0; 3],
+};
+
+/// The spheres of a node [`walk`] finds none for (never: `spheres` has an
+/// entry per node): they prune nothing.
+const NO_SPHERES: Spheres = Spheres {
+    cx: [0.0; 2],
+    cy: [0.0; 2],
+    cz: [0.0; 2],
+    r: [f64::INFINITY; 2],
+};
 
 /// Walks `tree` (non-empty) from the root, handing every point of every
 /// leaf that may hold a wanted point to `v`.
@@ -135,29 +179,12 @@ fn child_sphere(node: &Spheres, k: usize, q: DVec3, s: f64) -> (f64, f64) {
 /// and the nearer centre goes first, with no box bound.
 #[inline]
 pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64, v: &mut V) {
-    let none = Pending {
-        parent: 0,
-        k: 0,
-        child: Subtree {
-            at: 0,
-            start: 0,
-            count: 0,
-        },
-        box2: 0.0,
-        off: [0.0; 3],
-    };
+    let none = NO_PENDING;
     let mut stack = [none; STACK];
     let mut top = 0;
     let points = tree.radii.is_empty();
     let qs = [q.x, q.y, q.z];
-    // `spheres` has an entry per node; a missing one (never) prunes nothing.
-    const NONE: Spheres = Spheres {
-        cx: [0.0; 2],
-        cy: [0.0; 2],
-        cz: [0.0; 2],
-        r: [f64::INFINITY; 2],
-    };
-    let spheres = |i: u32| tree.spheres.get(i as usize).unwrap_or(&NONE);
+    let spheres = |i: u32| tree.spheres.get(i as usize).unwrap_or(&NO_SPHERES);
     // The subtree being entered, which has passed both prunes, and its
     // box's offsets.
     let mut cur = Subtree {
@@ -171,19 +198,7 @@ pub(crate) fn walk<V: Visitor>(tree: &SphereBvh, root: &Child, q: DVec3, s: f64,
         let descend = if cur.count as usize > LEAF {
             let here = cur.at;
             let node = &tree.nodes[here as usize];
-            let half = first_part(cur.count as usize) as u32;
-            let children = [
-                Subtree {
-                    at: here + 1,
-                    start: cur.start,
-                    count: half,
-                },
-                Subtree {
-                    at: node.right,
-                    start: cur.start + half,
-                    count: cur.count - half,
-                },
-            ];
+            let children = cur.children(node);
             let reach = v.reach();
             // Until the first leaf, nothing is pruned: no sphere is tested.
             let open = reach == f64::INFINITY;

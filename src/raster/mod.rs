@@ -132,6 +132,81 @@ impl Edge {
     }
 }
 
+/// The error bound of each edge function's stepped value, for every
+/// centre of the box from `corner` to `far` (`steps` rows and columns).
+///
+/// The function at the first centre is within gamma(4) of its
+/// permanent-like magnitude `|d| . |p - a|` (two differences, two
+/// products, one difference); each of at most `y1 - y0` row steps adds `u`
+/// times a value at most `max` (the largest of `|E|` at the box's corners:
+/// E is affine) plus the step's own rounding error, `u |step|`; `row + k *
+/// step_x` adds `k u |step_x|` (the step's rounding, `k` times), `u k
+/// |step_x|` (the product) and `u max` (the sum). `4u` per step of `steps`
+/// and a factor 2 cover all of it, second-order terms and the rounding of
+/// the bound.
+fn edge_bounds(edges: &[Edge; 3], corner: DVec2, far: DVec2, steps: f64) -> [f64; 3] {
+    edges.map(|e| {
+        let corners = [
+            corner,
+            far,
+            DVec2::new(corner.x, far.y),
+            DVec2::new(far.x, corner.y),
+        ];
+        let max = corners.iter().map(|&p| e.at(p).abs()).fold(0.0, f64::max);
+        let d = (e.b - e.a).abs();
+        let q = (corner - e.a).abs();
+        // Two rounded differences, their product and the final difference:
+        // four roundings on each product's path (Higham, Lemma 3.1).
+        let direct = gamma(4) * (d.x * q.y + d.y * q.x);
+        let stepping = 4.0 * U * steps * (max + e.step_x.abs() + e.step_y.abs());
+        2.0 * (direct + stepping)
+    })
+}
+
+/// The part `[from, to)` of a row of `n` centres that also lies inside one
+/// edge, `covers(k)` its exact answer for the `k`-th centre, `row` its
+/// stepped value at the row's first centre and `slope` its step along the
+/// row. Along a row an edge function is monotone, so the edge's run is a
+/// prefix or a suffix of the row (all or nothing for a horizontal edge):
+/// its end is found from the crossing the stepped value predicts, then
+/// moved a pixel at a time while the exact answer says so.
+#[inline(always)]
+fn edge_run(
+    slope: f64,
+    row: f64,
+    usable: bool,
+    (from, to, n): (u32, u32, u32),
+    covers: impl Fn(u32) -> bool,
+) -> (u32, u32) {
+    if slope == 0.0 || !usable {
+        // Horizontal (or too large to predict): scan the row.
+        let k = (from..to).find(|&k| covers(k)).unwrap_or(to);
+        let end = (k..to).find(|&k| !covers(k)).unwrap_or(to);
+        return (k, end);
+    }
+    let guess = (-row / slope).clamp(-1.0, n as f64 + 1.0);
+    let mut k = guess.max(0.0).min(n as f64) as u32;
+    if slope > 0.0 {
+        // A suffix: its first pixel.
+        while k > 0 && covers(k - 1) {
+            k -= 1;
+        }
+        while k < n && !covers(k) {
+            k += 1;
+        }
+        (from.max(k), to)
+    } else {
+        // A prefix: one past its last pixel.
+        while k < n && covers(k) {
+            k += 1;
+        }
+        while k > 0 && !covers(k - 1) {
+            k -= 1;
+        }
+        (from, to.min(k))
+    }
+}
+
 /// Rasterizes the triangle `v0, v1, v2` into a `width` x `height` pixel
 /// grid: calls `span(y, x_start, x_end)` for each row `y` with covered
 /// pixels `x_start..x_end` (one span per row: a triangle's row is convex),
@@ -186,31 +261,7 @@ pub fn rasterize_triangle(
     let corner = DVec2::new(x0 as f64 + 0.5, y0 as f64 + 0.5);
     let far = DVec2::new(x1 as f64 - 0.5, y1 as f64 - 0.5);
     let steps = (x1 - x0) as f64 + (y1 - y0) as f64;
-    // Error bound per edge, for every centre of the box: the function at
-    // the first centre is within gamma(4) of its permanent-like magnitude
-    // `|d| . |p - a|` (two differences, two products, one difference); each
-    // of at most `y1 - y0` row steps adds `u` times a value at most `max`
-    // (the largest of `|E|` at the box's corners: E is affine) plus the
-    // step's own rounding error, `u |step|`; `row + k * step_x` adds `k u
-    // |step_x|` (the step's rounding, `k` times), `u k |step_x|` (the
-    // product) and `u max` (the sum). `4u` per step of `steps` and a factor
-    // 2 cover all of it, second-order terms and the rounding of the bound.
-    let bound = edges.map(|e| {
-        let corners = [
-            corner,
-            far,
-            DVec2::new(corner.x, far.y),
-            DVec2::new(far.x, corner.y),
-        ];
-        let max = corners.iter().map(|&p| e.at(p).abs()).fold(0.0, f64::max);
-        let d = (e.b - e.a).abs();
-        let q = (corner - e.a).abs();
-        // Two rounded differences, their product and the final difference:
-        // four roundings on each product's path (Higham, Lemma 3.1).
-        let direct = gamma(4) * (d.x * q.y + d.y * q.x);
-        let stepping = 4.0 * U * steps * (max + e.step_x.abs() + e.step_y.abs());
-        2.0 * (direct + stepping)
-    });
+    let bound = edge_bounds(&edges, corner, far, steps);
     // Values too large for f64 (vertices near the largest floats): every
     // centre goes to the exact test.
     let usable = bound.iter().all(|b| b.is_finite());
@@ -231,42 +282,12 @@ pub fn rasterize_triangle(
                 edges[i].covers_exactly(DVec2::new((x0 + k) as f64 + 0.5, py))
             }
         };
-        // The row's span is the intersection of the three edges' runs. Along
-        // a row an edge function is monotone, so each edge's run is a prefix
-        // or a suffix of the row (all or nothing for a horizontal edge):
-        // its end is found from the crossing the stepped value predicts,
-        // then moved a pixel at a time while the exact answer says so.
+        // The row's span is the intersection of the three edges' runs.
         let (mut from, mut to) = (0, n);
         for i in 0..3 {
-            let slope = edges[i].step_x;
-            if slope == 0.0 || !usable {
-                // Horizontal (or too large to predict): scan the row.
-                let k = (from..to).find(|&k| covers(i, k)).unwrap_or(to);
-                let end = (k..to).find(|&k| !covers(i, k)).unwrap_or(to);
-                (from, to) = (k, end);
-            } else {
-                let guess = (-row[i] / slope).clamp(-1.0, n as f64 + 1.0);
-                let mut k = guess.max(0.0).min(n as f64) as u32;
-                if slope > 0.0 {
-                    // A suffix: its first pixel.
-                    while k > 0 && covers(i, k - 1) {
-                        k -= 1;
-                    }
-                    while k < n && !covers(i, k) {
-                        k += 1;
-                    }
-                    from = from.max(k);
-                } else {
-                    // A prefix: one past its last pixel.
-                    while k < n && covers(i, k) {
-                        k += 1;
-                    }
-                    while k > 0 && !covers(i, k - 1) {
-                        k -= 1;
-                    }
-                    to = to.min(k);
-                }
-            }
+            (from, to) = edge_run(edges[i].step_x, row[i], usable, (from, to, n), |k| {
+                covers(i, k)
+            });
             if from >= to {
                 break;
             }
