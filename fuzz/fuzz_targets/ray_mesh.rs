@@ -148,7 +148,10 @@ fuzz_target!(|data: &[u8]| {
     if !raw {
         let unit = |p: DVec3| p / scale;
         if let (Ok(m1), Ok(r1)) = (
-            TriangleMesh::new(&vertices.iter().map(|&p| unit(p)).collect::<Vec<_>>(), &triangles),
+            TriangleMesh::new(
+                &vertices.iter().map(|&p| unit(p)).collect::<Vec<_>>(),
+                &triangles,
+            ),
             Ray::new(unit(o), unit(d)),
         ) {
             let at_scale = mesh.closest_hit(&ray, Interval::FORWARD).is_some();
