@@ -86,9 +86,10 @@
 pub(crate) mod ball;
 mod batch;
 pub(crate) mod distance;
+mod implicit;
 mod incircle;
 mod insphere;
-mod orient2d;
+pub(crate) mod orient2d;
 pub(crate) mod orient3d;
 pub(crate) mod orient_dir;
 mod plane_side;
@@ -105,6 +106,13 @@ pub(crate) use distance::cmp_lengths;
 
 pub use crate::arith::lanes::BLOCK;
 pub use batch::{orient2d_many, orient3d_many};
+pub use implicit::{
+    AnyPoint2, AnyPoint3, Axis, Axis2, IntoAnyPoint2, IntoAnyPoint3, Lpi, Ssi, Tpi, cmp_along_line,
+    cmp_along_line_2d, cmp_on_axis, cmp_on_axis_2d, less_on_axis, orient2d_implicit,
+    orient2d_projected, orient3d_implicit, try_cmp_along_line, try_cmp_along_line_2d,
+    try_cmp_on_axis, try_cmp_on_axis_2d, try_less_on_axis, try_orient2d_implicit,
+    try_orient2d_projected, try_orient3d_implicit,
+};
 pub use plane_side::{SideRelation, same_side, side_of_plane, try_same_side, try_side_of_plane};
 
 /// Checks that every coordinate of every named point is finite.

@@ -45,6 +45,7 @@
 mod cases;
 mod float;
 mod generators;
+mod implicit;
 #[cfg(feature = "alloc")]
 mod meshes;
 mod pixels;
@@ -58,6 +59,7 @@ mod strategies;
 
 pub use cases::*;
 pub use generators::*;
+pub use implicit::*;
 #[cfg(feature = "alloc")]
 pub use meshes::*;
 pub use pixels::*;

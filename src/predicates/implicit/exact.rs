@@ -1,0 +1,296 @@
+//! The exact stage: every input coordinate as an integer at its axis's
+//! finest bit, each point's homogeneous coordinates and weight as exact
+//! integers relative to an input point, and the predicates' polynomials
+//! evaluated on them in fixed-capacity stack integers (`arith::fixed_int`),
+//! whatever the inputs' exponents.
+//!
+//! # Why per-axis integers are exact
+//! Scaling axis `k` by a positive `s_k` maps lines, planes and their
+//! intersections to lines, planes and intersections, and multiplies every
+//! predicate's polynomial by a positive monomial in the `s_k` (each of its
+//! terms has the same number of factors from each axis). With `s_k = 2^-lo_k`,
+//! `lo_k` the finest bit of axis `k` over every input, every coordinate is
+//! an integer, and the sign of the polynomial on those integers is the
+//! sign of the polynomial on the inputs. The order along a line is the one
+//! predicate this does not hold for (a dot product mixes the axes); it
+//! takes one grain for all axes ([`grid`] with `common`).
+//!
+//! # Widths
+//! A difference of two coordinates is below `2^S` (`S` the grid's
+//! `bits`, at most `2100` for `f64`); a value of degree `d` in the
+//! differences is below `2^(d S)` times the sum of its polynomial's
+//! coefficients, below `2^32` for every value here (the largest, the
+//! determinant of four three-plane points, has at most `4 * 48 * 6 *
+//! 144^3 < 2^32`). [`run`] picks the narrowest integers that hold `d S +
+//! 48` bits for the predicate's degree `d`: the points' own values (degree
+//! 7 at most) in `K` limbs, the predicate's in `N`.
+
+use super::any::{AnyPoint2, AnyPoint3, Point};
+use super::points::Tpi;
+use crate::arith::exponent::split;
+use crate::arith::fixed_int::{FixedInt, cross3};
+use crate::predicates::orient3d::det3_wide;
+use crate::sign::Sign;
+use glam::{DVec2, DVec3};
+
+/// The finest bit of every axis over a set of inputs, and the bits of a
+/// difference of two of them as integers at those bits.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Grid<const D: usize> {
+    pub(super) lo: [i32; D],
+    pub(super) bits: u32,
+}
+
+/// Collects the finest and coarsest bits of every axis.
+struct GridBuilder<const D: usize> {
+    lo: [i32; D],
+    hi: [i32; D],
+}
+
+impl<const D: usize> GridBuilder<D> {
+    fn new() -> Self {
+        GridBuilder {
+            lo: [i32::MAX; D],
+            hi: [i32::MIN; D],
+        }
+    }
+
+    /// Takes one input point (finite).
+    fn add(&mut self, v: [f64; D]) {
+        for (k, x) in v.into_iter().enumerate() {
+            let (m, e) = split(x);
+            if m != 0 {
+                let mag = m.unsigned_abs();
+                self.lo[k] = self.lo[k].min(e + mag.trailing_zeros() as i32);
+                self.hi[k] = self.hi[k].max(e + 63 - mag.leading_zeros() as i32);
+            }
+        }
+    }
+
+    /// The grid: per axis, or with `common` one grain for all axes.
+    fn build(self, common: bool) -> Grid<D> {
+        let (mut lo, mut hi) = (self.lo, self.hi);
+        if common {
+            let l = lo.iter().copied().min().unwrap_or(i32::MAX);
+            let h = hi.iter().copied().max().unwrap_or(i32::MIN);
+            (lo, hi) = ([l; D], [h; D]);
+        }
+        let mut span = 0;
+        for k in 0..D {
+            if lo[k] == i32::MAX {
+                // Every coordinate of the axis is zero.
+                lo[k] = 0;
+            } else {
+                span = span.max(hi[k] - lo[k] + 1);
+            }
+        }
+        Grid {
+            lo,
+            bits: span as u32 + 1,
+        }
+    }
+}
+
+/// The grid of a set of points' inputs: per axis, or with `common` one
+/// grain for all axes.
+pub(super) fn grid<P: Point<D>, const D: usize>(points: &[P], common: bool) -> Grid<D> {
+    let mut g = GridBuilder::new();
+    for p in points {
+        p.for_each_input(|v| g.add(v));
+    }
+    g.build(common)
+}
+
+/// An exact evaluation, run at the width its degree needs.
+pub(super) trait Exact {
+    /// The degree of its polynomial in the input differences.
+    fn degree(&self) -> u32;
+    /// The bits of a difference on its grid.
+    fn grid_bits(&self) -> u32;
+    /// Its sign, with the points' values in `K` limbs and its own in `N`.
+    fn eval<const K: usize, const N: usize>(&self) -> Sign;
+}
+
+/// The bits a `FixedInt<N>` holds with a sign (`fixed_int::limbs_for`).
+const fn capacity(limbs: usize) -> u32 {
+    64 * (limbs as u32 - 1) - 1
+}
+
+/// Runs `e` at the narrowest width that holds it (see the module docs). The
+/// widest, 900 limbs (7.2 KB per integer), holds degree 27 at the full
+/// `2100`-bit span; the points' values then stay in 256 limbs.
+pub(super) fn run(e: &impl Exact) -> Sign {
+    let need = e.degree() * e.grid_bits() + 48;
+    if need <= capacity(16) {
+        e.eval::<16, 16>()
+    } else if need <= capacity(64) {
+        e.eval::<64, 64>()
+    } else if need <= capacity(256) {
+        e.eval::<256, 256>()
+    } else {
+        e.eval::<256, 900>()
+    }
+}
+
+/// Integers of `K` limbs.
+pub(super) type Int<const K: usize> = FixedInt<K>;
+
+/// A point's exact homogeneous coordinates `w (X - o)` and weight `w`, on
+/// the grid.
+pub(super) struct IntHom<const K: usize, const D: usize> {
+    pub(super) l: [Int<K>; D],
+    pub(super) w: Int<K>,
+}
+
+/// The coordinates of `v` as integers at the grid's bits.
+pub(super) fn ints<const K: usize, const D: usize>(v: [f64; D], lo: [i32; D]) -> [Int<K>; D] {
+    core::array::from_fn(|k| Int::from_f64(v[k], lo[k]))
+}
+
+fn sub<const K: usize, const D: usize>(a: &[Int<K>; D], b: &[Int<K>; D]) -> [Int<K>; D] {
+    core::array::from_fn(|k| a[k].sub(&b[k]))
+}
+
+fn dot<const K: usize>(a: &[Int<K>; 3], b: &[Int<K>; 3]) -> Int<K> {
+    Int::mul(&a[0], &b[0])
+        .add(&Int::mul(&a[1], &b[1]))
+        .add(&Int::mul(&a[2], &b[2]))
+}
+
+fn perp<const K: usize>(a: &[Int<K>; 2], b: &[Int<K>; 2]) -> Int<K> {
+    Int::mul(&a[0], &b[1]).sub(&Int::mul(&a[1], &b[0]))
+}
+
+/// `a s - b t`, componentwise.
+fn combine<const K: usize, const D: usize>(
+    a: &[Int<K>; D],
+    s: &Int<K>,
+    b: &[Int<K>; D],
+    t: &Int<K>,
+) -> [Int<K>; D] {
+    core::array::from_fn(|k| Int::mul(&a[k], s).sub(&Int::mul(&b[k], t)))
+}
+
+/// A 3D point relative to the origin `o` (integers on the grid `lo`).
+pub(super) fn hom3<const K: usize>(p: &AnyPoint3, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
+    let int = |v: DVec3| ints::<K, 3>(v.to_array(), lo);
+    match p {
+        AnyPoint3::Explicit(x) => IntHom {
+            l: sub(&int(*x), o),
+            w: Int::from_i64(1),
+        },
+        AnyPoint3::Lpi(x) => {
+            let [p, q, r, s, t] = [x.p, x.q, x.r, x.s, x.t].map(int);
+            let n = cross3::<K, K>(&sub(&s, &r), &sub(&t, &r));
+            let e = sub(&q, &p);
+            let d = dot(&n, &e);
+            let pp = dot(&n, &sub(&p, &r));
+            IntHom {
+                l: combine(&sub(&p, o), &d, &e, &pp),
+                w: d,
+            }
+        }
+        AnyPoint3::Tpi(x) => {
+            let planes = x.planes.map(|plane| plane.map(int));
+            let n = normals(&planes);
+            let h: [Int<K>; 3] = core::array::from_fn(|i| dot(&n[i], &sub(&planes[i][0], o)));
+            let c = [
+                cross3::<K, K>(&n[1], &n[2]),
+                cross3::<K, K>(&n[2], &n[0]),
+                cross3::<K, K>(&n[0], &n[1]),
+            ];
+            let l = core::array::from_fn(|k| {
+                Int::mul(&c[0][k], &h[0])
+                    .add(&Int::mul(&c[1][k], &h[1]))
+                    .add(&Int::mul(&c[2][k], &h[2]))
+            });
+            IntHom {
+                l,
+                w: dot(&n[0], &c[0]),
+            }
+        }
+    }
+}
+
+/// The planes' normals `n_i = (i1 - i0) x (i2 - i0)`.
+fn normals<const K: usize>(planes: &[[[Int<K>; 3]; 3]; 3]) -> [[Int<K>; 3]; 3] {
+    planes
+        .each_ref()
+        .map(|[p0, p1, p2]| cross3::<K, K>(&sub(p1, p0), &sub(p2, p0)))
+}
+
+/// A 2D point relative to the origin `o` (integers on the grid `lo`).
+pub(super) fn hom2<const K: usize>(p: &AnyPoint2, o: &[Int<K>; 2], lo: [i32; 2]) -> IntHom<K, 2> {
+    let int = |v: DVec2| ints::<K, 2>(v.to_array(), lo);
+    match p {
+        AnyPoint2::Explicit(x) => IntHom {
+            l: sub(&int(*x), o),
+            w: Int::from_i64(1),
+        },
+        AnyPoint2::Ssi(x) => {
+            let [p, q, r, s] = [x.p, x.q, x.r, x.s].map(int);
+            let (e, f) = (sub(&q, &p), sub(&s, &r));
+            let d = perp(&e, &f);
+            let t = perp(&sub(&r, &p), &f);
+            // D (p - o) + T e = D (p - o) - (-T) e.
+            IntHom {
+                l: combine(&sub(&p, o), &d, &e, &t.neg()),
+                w: d,
+            }
+        }
+    }
+}
+
+/// `det[x0, x1, x2]` of integer rows.
+pub(super) fn det3<const K: usize, const N: usize>(rows: [&[Int<K>; 3]; 3]) -> Int<N> {
+    det3_wide::<K, N, N>(&[*rows[0], *rows[1], *rows[2]])
+}
+
+/// `det[x0, x1]` of integer rows.
+pub(super) fn det2<const K: usize, const N: usize>(rows: [&[Int<K>; 2]; 2]) -> Int<N> {
+    let [x, y] = rows;
+    Int::<N>::mul(&x[0], &y[1]).sub(&Int::mul(&x[1], &y[0]))
+}
+
+/// The exact sign of a [`Tpi`]'s weight.
+pub(super) fn tpi_weight_sign(x: &Tpi) -> Sign {
+    struct Weight<'a>(&'a Tpi, Grid<3>);
+    impl Exact for Weight<'_> {
+        fn degree(&self) -> u32 {
+            6
+        }
+        fn grid_bits(&self) -> u32 {
+            self.1.bits
+        }
+        fn eval<const K: usize, const N: usize>(&self) -> Sign {
+            let planes = self
+                .0
+                .planes
+                .map(|p| p.map(|v| ints::<K, 3>(v.to_array(), self.1.lo)));
+            let n = normals(&planes);
+            det3::<K, N>([&n[0], &n[1], &n[2]]).sign()
+        }
+    }
+    let grid = grid(&[AnyPoint3::Tpi(*x)], false);
+    run(&Weight(x, grid))
+}
+
+/// The exact sign of `det[a0 - b0, a1 - b1, a2 - b2]` (the weight of an
+/// `Lpi`), where the sparse terms did not fit.
+pub(super) fn det3_of_differences(rows: [(DVec3, DVec3); 3]) -> Sign {
+    let explicit = rows.map(|(a, b)| [AnyPoint3::Explicit(a), AnyPoint3::Explicit(b)]);
+    let grid = grid(explicit.as_flattened(), false);
+    let int = |v: DVec3| ints::<34, 3>(v.to_array(), grid.lo);
+    let d = rows.map(|(a, b)| sub(&int(a), &int(b)));
+    det3::<34, 100>([&d[0], &d[1], &d[2]]).sign()
+}
+
+/// The exact sign of `(a0 - b0) x (a1 - b1)` (the weight of an `Ssi`),
+/// where the sparse terms did not fit.
+pub(super) fn cross_of_differences(e: (DVec2, DVec2), f: (DVec2, DVec2)) -> Sign {
+    let explicit = [e.0, e.1, f.0, f.1].map(AnyPoint2::Explicit);
+    let grid = grid(&explicit, false);
+    let int = |v: DVec2| ints::<34, 2>(v.to_array(), grid.lo);
+    let (x, y) = (sub(&int(e.0), &int(e.1)), sub(&int(f.0), &int(f.1)));
+    det2::<34, 67>([&x, &y]).sign()
+}

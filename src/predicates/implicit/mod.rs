@@ -1,0 +1,102 @@
+//! Exact predicates on constructed points: orientation and order of
+//! line–plane ([`Lpi`]), three-plane ([`Tpi`]) and line–line ([`Ssi`])
+//! intersection points, exact for every finite `f64` input, without
+//! constructing the points.
+//!
+//! A constructed point is its input points. Its construction decides
+//! exactly that they define one point, and keeps the exact sign of its
+//! weight. Relative to an origin `o` its homogeneous coordinates `l = w (X
+//! - o)` and its weight `w` are polynomials in the input coordinates: of
+//! degrees 4 and 3 for an `Lpi`, 7 and 6 for a `Tpi`, 3 and 2 for an `Ssi`
+//! (an explicit point: `x - o`, degree 1, over the weight 1). Each
+//! predicate is the sign of a polynomial in those (its degree stated with
+//! it), times the signs of the weights.
+//!
+//! Each predicate runs the crate's ladder:
+//! 1. **filtered**: the points' coordinates in `f64` relative to an input
+//!    point, each with an a-priori bound on its error (`c u M^d`, `M` the
+//!    largest input difference the point is built from; the constants are
+//!    derived beside them in `approx.rs`), and the predicate's polynomial
+//!    with a bound on its error computed from those (also derived there).
+//!    It runs while every `M` lies where nothing overflows and underflow is
+//!    negligible, `[2^-R, 2^R]` with `R = 800 / degree`.
+//! 2. **scaled filter**: out of that range, every input is scaled by one
+//!    power of two, which leaves every sign unchanged, and the filter runs
+//!    again.
+//! 3. **exact**: every input coordinate as an integer at its axis's finest
+//!    bit, the points' homogeneous coordinates and the polynomial in
+//!    fixed-capacity stack integers as wide as its degree and the inputs'
+//!    span need (`exact.rs`).
+//!
+//! No stage allocates. The exact stage's integers live on the stack: at
+//! most about 100 KB of it for four `Tpi`s whose coordinates span the
+//! whole `f64` range, a few KB for ordinary inputs.
+
+mod any;
+mod api;
+mod approx;
+mod exact;
+mod order;
+mod orient;
+mod points;
+
+pub use any::{AnyPoint2, AnyPoint3, IntoAnyPoint2, IntoAnyPoint3};
+pub use api::*;
+pub use points::{Lpi, Ssi, Tpi};
+
+use crate::sign::Sign;
+use any::Point;
+use approx::Verdict;
+
+/// The origin the predicates measure from and their pivot: the first
+/// explicit point, or where there is none, an input point of the first.
+#[inline(always)]
+fn pivot<P: Point<D>, const D: usize>(p: &[P]) -> ([f64; D], Option<usize>) {
+    match p.iter().position(|x| x.explicit().is_some()) {
+        Some(j) => (p[j].anchor(), Some(j)),
+        None => (p[0].anchor(), None),
+    }
+}
+
+/// `s` times the signs of every point's weight.
+#[inline(always)]
+fn with_weights<P: Point<D>, const D: usize>(s: Sign, p: &[P]) -> Sign {
+    p.iter().fold(s, |s, x| s.product(x.weight_sign()))
+}
+
+/// The ladder (see the module docs): `filter` on the points, then on the
+/// points scaled by a power of two when a scale was out of range, then
+/// `exact` on the points as given.
+#[inline(always)]
+fn ladder<P: Point<D>, const D: usize, const K: usize>(
+    p: [P; K],
+    filter: impl Fn(&[P; K]) -> Verdict,
+    exact: impl FnOnce(&[P; K]) -> Sign,
+) -> Sign {
+    match filter(&p) {
+        Verdict::Certain(s) => s,
+        Verdict::Uncertain => exact(&p),
+        Verdict::OutOfRange(largest) => {
+            let largest_coordinate = || {
+                let mut m = 0.0f64;
+                for x in &p {
+                    x.for_each_input(|v| v.iter().for_each(|c| m = m.max(c.abs())));
+                }
+                m
+            };
+            match approx::rescaling(largest, largest_coordinate) {
+                Some(k) => match filter(&p.map(|x| x.scaled(k))) {
+                    Verdict::Certain(s) => s,
+                    _ => exact(&p),
+                },
+                None => exact(&p),
+            }
+        }
+    }
+}
+
+/// The largest scale of a filter's points.
+#[inline(always)]
+fn largest_scale<const D: usize>(h: &[approx::Hom<D>]) -> f64 {
+    h.iter().fold(0.0, |m, x| m.max(x.scale))
+}
