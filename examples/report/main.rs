@@ -29,6 +29,7 @@ mod signs;
 mod targets;
 
 mod delaunay;
+mod implicit;
 mod incircle;
 mod insphere;
 mod nearest;
@@ -58,6 +59,7 @@ const FAMILIES: &[(&str, Family)] = &[
     ("incircle", |cfg| incircle::family().run(cfg)),
     ("insphere", |cfg| insphere::family().run(cfg)),
     ("plane_side", |cfg| plane_side::family().run(cfg)),
+    ("implicit", implicit::run),
     ("nearest", nearest::run),
     ("nearest_build", nearest_build::run),
     ("ray_sphere", |cfg| ray_sphere::family().run(cfg)),

@@ -107,7 +107,7 @@ pub(crate) use distance::cmp_lengths;
 pub use crate::arith::lanes::BLOCK;
 pub use batch::{orient2d_many, orient3d_many};
 pub use implicit::{
-    AnyPoint2, AnyPoint3, Axis, Axis2, IntoAnyPoint2, IntoAnyPoint3, Lpi, Ssi, Tpi, cmp_along_line,
+    AnyPoint2, AnyPoint3, AsAnyPoint2, AsAnyPoint3, Axis, Axis2, Lpi, Ssi, Tpi, cmp_along_line,
     cmp_along_line_2d, cmp_on_axis, cmp_on_axis_2d, less_on_axis, orient2d_implicit,
     orient2d_projected, orient3d_implicit, try_cmp_along_line, try_cmp_along_line_2d,
     try_cmp_on_axis, try_cmp_on_axis_2d, try_less_on_axis, try_orient2d_implicit,

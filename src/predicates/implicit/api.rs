@@ -1,6 +1,6 @@
 //! The public predicates on constructed points, each with its `try_` form.
 
-use super::any::{AnyPoint2, AnyPoint3, IntoAnyPoint2, IntoAnyPoint3, Point};
+use super::any::{AsAnyPoint2, AsAnyPoint3, View2, View3};
 use super::{order, orient};
 use crate::error::InputError;
 use crate::point::{IntoDVec2, IntoDVec3};
@@ -28,22 +28,28 @@ pub enum Axis2 {
     Y,
 }
 
-/// Whether every explicit point is finite (constructed points always are).
-fn finite3(p: &[AnyPoint3]) -> bool {
-    p.iter()
-        .all(|x| x.explicit().is_none_or(|v| v.iter().all(|c| c.is_finite())))
+/// Whether every explicit point is finite, for the predicates that read
+/// only some of its coordinates (the others take a NaN or an infinity to
+/// their filter's value or bound, and so to `Zero`).
+fn finite3(p: &[View3<'_>]) -> bool {
+    p.iter().all(|x| match x {
+        View3::Explicit(v) => v.is_finite(),
+        _ => true,
+    })
 }
 
-fn finite2(p: &[AnyPoint2]) -> bool {
-    p.iter()
-        .all(|x| x.explicit().is_none_or(|v| v.iter().all(|c| c.is_finite())))
+fn finite2(p: &[View2<'_>]) -> bool {
+    p.iter().all(|x| match x {
+        View2::Explicit(v) => v.is_finite(),
+        _ => true,
+    })
 }
 
-fn check3(p: &[AnyPoint3], names: &[&'static str]) -> Result<(), InputError> {
+fn check3(p: &[View3<'_>], names: &[&'static str]) -> Result<(), InputError> {
     p.iter().zip(names).try_for_each(|(x, name)| x.check(name))
 }
 
-fn check2(p: &[AnyPoint2], names: &[&'static str]) -> Result<(), InputError> {
+fn check2(p: &[View2<'_>], names: &[&'static str]) -> Result<(), InputError> {
     p.iter().zip(names).try_for_each(|(x, name)| x.check(name))
 }
 
@@ -83,20 +89,12 @@ fn ordering(s: Sign) -> Ordering {
 /// ```
 #[inline]
 pub fn orient3d_implicit(
-    a: impl IntoAnyPoint3,
-    b: impl IntoAnyPoint3,
-    c: impl IntoAnyPoint3,
-    d: impl IntoAnyPoint3,
+    a: impl AsAnyPoint3,
+    b: impl AsAnyPoint3,
+    c: impl AsAnyPoint3,
+    d: impl AsAnyPoint3,
 ) -> Sign {
-    let p = [
-        a.into_any_point3(),
-        b.into_any_point3(),
-        c.into_any_point3(),
-        d.into_any_point3(),
-    ];
-    if !finite3(&p) {
-        return Sign::Zero;
-    }
+    let p = [a.view3(), b.view3(), c.view3(), d.view3()];
     orient::orient3d(p)
 }
 
@@ -107,17 +105,12 @@ pub fn orient3d_implicit(
 /// explicit point, naming the first such argument.
 #[inline]
 pub fn try_orient3d_implicit(
-    a: impl IntoAnyPoint3,
-    b: impl IntoAnyPoint3,
-    c: impl IntoAnyPoint3,
-    d: impl IntoAnyPoint3,
+    a: impl AsAnyPoint3,
+    b: impl AsAnyPoint3,
+    c: impl AsAnyPoint3,
+    d: impl AsAnyPoint3,
 ) -> Result<Sign, InputError> {
-    let p = [
-        a.into_any_point3(),
-        b.into_any_point3(),
-        c.into_any_point3(),
-        d.into_any_point3(),
-    ];
+    let p = [a.view3(), b.view3(), c.view3(), d.view3()];
     check3(&p, &["a", "b", "c", "d"])?;
     Ok(orient::orient3d(p))
 }
@@ -141,19 +134,8 @@ pub fn try_orient3d_implicit(
 /// assert_eq!(orient2d_implicit([0.0, 0.0], x, y), Sign::Zero);
 /// ```
 #[inline]
-pub fn orient2d_implicit(
-    a: impl IntoAnyPoint2,
-    b: impl IntoAnyPoint2,
-    c: impl IntoAnyPoint2,
-) -> Sign {
-    let p = [
-        a.into_any_point2(),
-        b.into_any_point2(),
-        c.into_any_point2(),
-    ];
-    if !finite2(&p) {
-        return Sign::Zero;
-    }
+pub fn orient2d_implicit(a: impl AsAnyPoint2, b: impl AsAnyPoint2, c: impl AsAnyPoint2) -> Sign {
+    let p = [a.view2(), b.view2(), c.view2()];
     orient::orient2d(p)
 }
 
@@ -164,15 +146,11 @@ pub fn orient2d_implicit(
 /// explicit point, naming the first such argument.
 #[inline]
 pub fn try_orient2d_implicit(
-    a: impl IntoAnyPoint2,
-    b: impl IntoAnyPoint2,
-    c: impl IntoAnyPoint2,
+    a: impl AsAnyPoint2,
+    b: impl AsAnyPoint2,
+    c: impl AsAnyPoint2,
 ) -> Result<Sign, InputError> {
-    let p = [
-        a.into_any_point2(),
-        b.into_any_point2(),
-        c.into_any_point2(),
-    ];
+    let p = [a.view2(), b.view2(), c.view2()];
     check2(&p, &["a", "b", "c"])?;
     Ok(orient::orient2d(p))
 }
@@ -198,16 +176,12 @@ pub fn try_orient2d_implicit(
 /// ```
 #[inline]
 pub fn orient2d_projected(
-    a: impl IntoAnyPoint3,
-    b: impl IntoAnyPoint3,
-    c: impl IntoAnyPoint3,
+    a: impl AsAnyPoint3,
+    b: impl AsAnyPoint3,
+    c: impl AsAnyPoint3,
     drop: Axis,
 ) -> Sign {
-    let p = [
-        a.into_any_point3(),
-        b.into_any_point3(),
-        c.into_any_point3(),
-    ];
+    let p = [a.view3(), b.view3(), c.view3()];
     if !finite3(&p) {
         return Sign::Zero;
     }
@@ -221,16 +195,12 @@ pub fn orient2d_projected(
 /// explicit point, naming the first such argument.
 #[inline]
 pub fn try_orient2d_projected(
-    a: impl IntoAnyPoint3,
-    b: impl IntoAnyPoint3,
-    c: impl IntoAnyPoint3,
+    a: impl AsAnyPoint3,
+    b: impl AsAnyPoint3,
+    c: impl AsAnyPoint3,
     drop: Axis,
 ) -> Result<Sign, InputError> {
-    let p = [
-        a.into_any_point3(),
-        b.into_any_point3(),
-        c.into_any_point3(),
-    ];
+    let p = [a.view3(), b.view3(), c.view3()];
     check3(&p, &["a", "b", "c"])?;
     Ok(orient::orient2d_projected(p, drop as usize))
 }
@@ -256,8 +226,8 @@ pub fn try_orient2d_projected(
 /// assert_eq!(cmp_on_axis(at_x, [0.0, 0.0, 1.5], Axis::Z), Ordering::Less);
 /// ```
 #[inline]
-pub fn cmp_on_axis(x: impl IntoAnyPoint3, y: impl IntoAnyPoint3, axis: Axis) -> Ordering {
-    let p = [x.into_any_point3(), y.into_any_point3()];
+pub fn cmp_on_axis(x: impl AsAnyPoint3, y: impl AsAnyPoint3, axis: Axis) -> Ordering {
+    let p = [x.view3(), y.view3()];
     if !finite3(&p) {
         return Ordering::Equal;
     }
@@ -271,11 +241,11 @@ pub fn cmp_on_axis(x: impl IntoAnyPoint3, y: impl IntoAnyPoint3, axis: Axis) -> 
 /// explicit point, naming the first such argument.
 #[inline]
 pub fn try_cmp_on_axis(
-    x: impl IntoAnyPoint3,
-    y: impl IntoAnyPoint3,
+    x: impl AsAnyPoint3,
+    y: impl AsAnyPoint3,
     axis: Axis,
 ) -> Result<Ordering, InputError> {
-    let p = [x.into_any_point3(), y.into_any_point3()];
+    let p = [x.view3(), y.view3()];
     check3(&p, &["x", "y"])?;
     Ok(ordering(order::on_axis(p, axis as usize)))
 }
@@ -291,7 +261,7 @@ pub fn try_cmp_on_axis(
 /// assert!(!less_on_axis(x, [1.0, 2.0, 0.0], Axis::X));
 /// ```
 #[inline]
-pub fn less_on_axis(x: impl IntoAnyPoint3, y: impl IntoAnyPoint3, axis: Axis) -> bool {
+pub fn less_on_axis(x: impl AsAnyPoint3, y: impl AsAnyPoint3, axis: Axis) -> bool {
     cmp_on_axis(x, y, axis) == Ordering::Less
 }
 
@@ -302,8 +272,8 @@ pub fn less_on_axis(x: impl IntoAnyPoint3, y: impl IntoAnyPoint3, axis: Axis) ->
 /// explicit point, naming the first such argument.
 #[inline]
 pub fn try_less_on_axis(
-    x: impl IntoAnyPoint3,
-    y: impl IntoAnyPoint3,
+    x: impl AsAnyPoint3,
+    y: impl AsAnyPoint3,
     axis: Axis,
 ) -> Result<bool, InputError> {
     Ok(try_cmp_on_axis(x, y, axis)? == Ordering::Less)
@@ -337,23 +307,20 @@ pub fn try_less_on_axis(
 pub fn cmp_along_line(
     p: impl IntoDVec3,
     q: impl IntoDVec3,
-    x: impl IntoAnyPoint3,
-    y: impl IntoAnyPoint3,
+    x: impl AsAnyPoint3,
+    y: impl AsAnyPoint3,
 ) -> Ordering {
-    let pts = along3(p.into_dvec3(), q.into_dvec3(), x, y);
-    if !finite3(&pts) {
-        return Ordering::Equal;
-    }
+    let pts = along3(p.into_dvec3(), q.into_dvec3(), &x, &y);
     ordering(-order::along_line(pts))
 }
 
-fn along3(p: DVec3, q: DVec3, x: impl IntoAnyPoint3, y: impl IntoAnyPoint3) -> [AnyPoint3; 4] {
-    [
-        AnyPoint3::Explicit(p),
-        AnyPoint3::Explicit(q),
-        x.into_any_point3(),
-        y.into_any_point3(),
-    ]
+fn along3<'a>(
+    p: DVec3,
+    q: DVec3,
+    x: &'a impl AsAnyPoint3,
+    y: &'a impl AsAnyPoint3,
+) -> [View3<'a>; 4] {
+    [View3::Explicit(p), View3::Explicit(q), x.view3(), y.view3()]
 }
 
 /// [`cmp_along_line`], checked: the same answer for finite input and `p !=
@@ -367,12 +334,13 @@ fn along3(p: DVec3, q: DVec3, x: impl IntoAnyPoint3, y: impl IntoAnyPoint3) -> [
 pub fn try_cmp_along_line(
     p: impl IntoDVec3,
     q: impl IntoDVec3,
-    x: impl IntoAnyPoint3,
-    y: impl IntoAnyPoint3,
+    x: impl AsAnyPoint3,
+    y: impl AsAnyPoint3,
 ) -> Result<Ordering, InputError> {
-    let pts = along3(p.into_dvec3(), q.into_dvec3(), x, y);
+    let (p, q) = (p.into_dvec3(), q.into_dvec3());
+    let pts = along3(p, q, &x, &y);
     check3(&pts, &["p", "q", "x", "y"])?;
-    if pts[0] == pts[1] {
+    if p == q {
         return Err(InputError::ZeroDirection);
     }
     Ok(ordering(-order::along_line(pts)))
@@ -390,8 +358,8 @@ pub fn try_cmp_along_line(
 /// assert_eq!(cmp_on_axis_2d(x, [0.0, 1.0 / 3.0], Axis2::Y), Ordering::Greater);
 /// ```
 #[inline]
-pub fn cmp_on_axis_2d(x: impl IntoAnyPoint2, y: impl IntoAnyPoint2, axis: Axis2) -> Ordering {
-    let p = [x.into_any_point2(), y.into_any_point2()];
+pub fn cmp_on_axis_2d(x: impl AsAnyPoint2, y: impl AsAnyPoint2, axis: Axis2) -> Ordering {
+    let p = [x.view2(), y.view2()];
     if !finite2(&p) {
         return Ordering::Equal;
     }
@@ -405,11 +373,11 @@ pub fn cmp_on_axis_2d(x: impl IntoAnyPoint2, y: impl IntoAnyPoint2, axis: Axis2)
 /// explicit point, naming the first such argument.
 #[inline]
 pub fn try_cmp_on_axis_2d(
-    x: impl IntoAnyPoint2,
-    y: impl IntoAnyPoint2,
+    x: impl AsAnyPoint2,
+    y: impl AsAnyPoint2,
     axis: Axis2,
 ) -> Result<Ordering, InputError> {
-    let p = [x.into_any_point2(), y.into_any_point2()];
+    let p = [x.view2(), y.view2()];
     check2(&p, &["x", "y"])?;
     Ok(ordering(order::on_axis(p, axis as usize)))
 }
@@ -431,23 +399,20 @@ pub fn try_cmp_on_axis_2d(
 pub fn cmp_along_line_2d(
     p: impl IntoDVec2,
     q: impl IntoDVec2,
-    x: impl IntoAnyPoint2,
-    y: impl IntoAnyPoint2,
+    x: impl AsAnyPoint2,
+    y: impl AsAnyPoint2,
 ) -> Ordering {
-    let pts = along2(p.into_dvec2(), q.into_dvec2(), x, y);
-    if !finite2(&pts) {
-        return Ordering::Equal;
-    }
+    let pts = along2(p.into_dvec2(), q.into_dvec2(), &x, &y);
     ordering(-order::along_line(pts))
 }
 
-fn along2(p: DVec2, q: DVec2, x: impl IntoAnyPoint2, y: impl IntoAnyPoint2) -> [AnyPoint2; 4] {
-    [
-        AnyPoint2::Explicit(p),
-        AnyPoint2::Explicit(q),
-        x.into_any_point2(),
-        y.into_any_point2(),
-    ]
+fn along2<'a>(
+    p: DVec2,
+    q: DVec2,
+    x: &'a impl AsAnyPoint2,
+    y: &'a impl AsAnyPoint2,
+) -> [View2<'a>; 4] {
+    [View2::Explicit(p), View2::Explicit(q), x.view2(), y.view2()]
 }
 
 /// [`cmp_along_line_2d`], checked: the same answer for finite input and
@@ -461,12 +426,13 @@ fn along2(p: DVec2, q: DVec2, x: impl IntoAnyPoint2, y: impl IntoAnyPoint2) -> [
 pub fn try_cmp_along_line_2d(
     p: impl IntoDVec2,
     q: impl IntoDVec2,
-    x: impl IntoAnyPoint2,
-    y: impl IntoAnyPoint2,
+    x: impl AsAnyPoint2,
+    y: impl AsAnyPoint2,
 ) -> Result<Ordering, InputError> {
-    let pts = along2(p.into_dvec2(), q.into_dvec2(), x, y);
+    let (p, q) = (p.into_dvec2(), q.into_dvec2());
+    let pts = along2(p, q, &x, &y);
     check2(&pts, &["p", "q", "x", "y"])?;
-    if pts[0] == pts[1] {
+    if p == q {
         return Err(InputError::ZeroDirection);
     }
     Ok(ordering(-order::along_line(pts)))

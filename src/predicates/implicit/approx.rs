@@ -27,7 +27,7 @@
 //! by one power of two (which leaves every sign unchanged) and try again,
 //! and only then go exact.
 
-use super::any::{AnyPoint2, AnyPoint3};
+use super::any::{View2, View3};
 use super::points::{Lpi, Ssi, Tpi};
 use crate::arith::exponent::{pow2, unit_scale};
 use crate::arith::magnitude::larger;
@@ -98,8 +98,10 @@ pub(super) fn norm2(v: DVec2) -> f64 {
 
 /// A point relative to an origin `o`: rounded homogeneous coordinates `l
 /// ~ w (X - o)` and weight `w`, their bounds (`|l - l_exact| <= el` in
-/// every component, `|w - w_exact| <= ew`), the point's scale `M`, and
-/// whether it is explicit (`w = 1` exactly).
+/// every component, `|w - w_exact| <= ew`), the point's scale `M` (over
+/// its differences and its offset from `o`) and the construction's own
+/// (`least`, over its differences only: its weight's bound uses that one),
+/// and whether it is explicit (`w = 1` exactly).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Hom<const D: usize> {
     pub(super) l: [f64; D],
@@ -107,21 +109,22 @@ pub(super) struct Hom<const D: usize> {
     pub(super) el: f64,
     pub(super) ew: f64,
     pub(super) scale: f64,
+    pub(super) least: f64,
     pub(super) explicit: bool,
 }
 
-impl Hom<3> {
-    /// The projection that drops axis `drop`, keeping the axes `drop + 1`
-    /// and `drop + 2` (cyclically): the bounds stay (a component's error is
-    /// within the vector's).
+impl<const D: usize> Hom<D> {
+    /// The point's coordinates on the axes `axes` (a projection): the
+    /// bounds stay (a component's error is within the vector's).
     #[inline(always)]
-    pub(super) fn project(&self, drop: usize) -> Hom<2> {
+    pub(super) fn select(&self, axes: [usize; 2]) -> Hom<2> {
         Hom {
-            l: [self.l[(drop + 1) % 3], self.l[(drop + 2) % 3]],
+            l: [self.l[axes[0]], self.l[axes[1]]],
             w: self.w,
             el: self.el,
             ew: self.ew,
             scale: self.scale,
+            least: self.least,
             explicit: self.explicit,
         }
     }
@@ -129,7 +132,7 @@ impl Hom<3> {
 
 /// An explicit point `x` relative to `o`: the rounded difference.
 #[inline(always)]
-fn explicit<const D: usize>(l: [f64; D]) -> Hom<D> {
+pub(super) fn explicit<const D: usize>(l: [f64; D]) -> Hom<D> {
     let r = l.iter().fold(0.0, |m, x| larger(m, x.abs()));
     Hom {
         l,
@@ -137,129 +140,216 @@ fn explicit<const D: usize>(l: [f64; D]) -> Hom<D> {
         el: EXPLICIT * r,
         ew: 0.0,
         scale: r,
+        least: r,
         explicit: true,
     }
 }
 
 /// A point relative to `o`, rounded, with its bounds.
 #[inline(always)]
-pub(super) fn hom3(p: &AnyPoint3, o: DVec3) -> Hom<3> {
+pub(super) fn hom3(p: &View3<'_>, o: DVec3) -> Hom<3> {
     match p {
-        AnyPoint3::Explicit(x) => explicit((*x - o).to_array()),
-        AnyPoint3::Lpi(x) => lpi(x, o),
-        AnyPoint3::Tpi(x) => tpi(x, o),
+        View3::Explicit(x) => explicit((*x - o).to_array()),
+        View3::Lpi(x) => lpi(x, o),
+        View3::Tpi(x) => tpi(x, o),
     }
 }
 
 /// A point relative to `o`, rounded, with its bounds.
 #[inline(always)]
-pub(super) fn hom2(p: &AnyPoint2, o: DVec2) -> Hom<2> {
+pub(super) fn hom2(p: &View2<'_>, o: DVec2) -> Hom<2> {
     match p {
-        AnyPoint2::Explicit(x) => explicit((*x - o).to_array()),
-        AnyPoint2::Ssi(x) => ssi(x, o),
+        View2::Explicit(x) => explicit((*x - o).to_array()),
+        View2::Ssi(x) => ssi(x, o),
     }
 }
 
+/// The part of an [`Lpi`]'s filter that does not depend on the origin,
+/// computed once at construction: `n = (s - r) x (t - r)`, `D = n . (q -
+/// p)` and `P = n . (p - r)` rounded, and the scale `M` of the rounded
+/// differences `s - r`, `t - r`, `q - p`, `p - r`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct LpiCache {
+    d: f64,
+    p: f64,
+    pub(super) m: f64,
+}
+
+/// [`LpiCache`] of the inputs.
+pub(super) fn lpi_cache(p: DVec3, q: DVec3, r: DVec3, s: DVec3, t: DVec3) -> LpiCache {
+    let (a1, a2, e, g) = (s - r, t - r, q - p, p - r);
+    let m = larger(larger(norm3(a1), norm3(a2)), larger(norm3(e), norm3(g)));
+    let n = a1.cross(a2);
+    LpiCache {
+        d: n.dot(e),
+        p: n.dot(g),
+        m,
+    }
+}
+
+impl LpiCache {
+    /// The certified sign of `D`, if the filter can tell.
+    pub(super) fn weight_sign(&self) -> Option<Sign> {
+        let m3 = self.m * self.m * self.m;
+        weight_in_range(self.m, 3)
+            .then(|| certified(self.d, LPI_W * m3 * SAFETY))
+            .flatten()
+    }
+}
+
+/// Whether a construction's own scale lies where its weight's bound holds
+/// (degree `degree`, see [`in_range`]).
+fn weight_in_range(m: f64, degree: i32) -> bool {
+    (pow2(-800 / degree)..=pow2(800 / degree)).contains(&m)
+}
+
+/// An [`Lpi`] relative to `o`: `h = p - o` and `l = h D - e P`, with `M`
+/// raised to cover `h` (every bound above holds with the larger `M`).
 #[inline(always)]
 fn lpi(x: &Lpi, o: DVec3) -> Hom<3> {
-    let (a1, a2, e, g, h) = (x.s - x.r, x.t - x.r, x.q - x.p, x.p - x.r, x.p - o);
-    let m = larger(
-        larger(larger(norm3(a1), norm3(a2)), larger(norm3(e), norm3(g))),
-        norm3(h),
-    );
-    let n = a1.cross(a2);
-    let (d, p) = (n.dot(e), n.dot(g));
-    let m3 = m * m * m;
-    Hom {
-        l: (h * d - e * p).to_array(),
-        w: d,
-        el: LPI_L * (m3 * m),
-        ew: LPI_W * m3,
-        scale: m,
-        explicit: false,
-    }
-}
-
-/// The normals, the offsets `h_i` and the scale of a [`Tpi`]'s planes
-/// relative to `o`.
-#[inline(always)]
-fn tpi_normals(x: &Tpi, o: DVec3) -> ([DVec3; 3], [f64; 3], f64) {
-    let mut m = 0.0;
-    let mut n = [DVec3::ZERO; 3];
-    let mut h = [0.0; 3];
-    for (i, [p0, p1, p2]) in x.planes.iter().enumerate() {
-        let (a, b, g) = (*p1 - *p0, *p2 - *p0, *p0 - o);
-        m = larger(m, larger(larger(norm3(a), norm3(b)), norm3(g)));
-        n[i] = a.cross(b);
-        h[i] = n[i].dot(g);
-    }
-    (n, h, m)
-}
-
-#[inline(always)]
-fn tpi(x: &Tpi, o: DVec3) -> Hom<3> {
-    let (n, h, m) = tpi_normals(x, o);
-    let c = [n[1].cross(n[2]), n[2].cross(n[0]), n[0].cross(n[1])];
-    let m2 = m * m;
-    let m6 = m2 * m2 * m2;
-    Hom {
-        l: (c[0] * h[0] + c[1] * h[1] + c[2] * h[2]).to_array(),
-        w: n[0].dot(c[0]),
-        el: TPI_L * (m6 * m),
-        ew: TPI_W * m6,
-        scale: m,
-        explicit: false,
-    }
-}
-
-#[inline(always)]
-fn ssi(x: &Ssi, o: DVec2) -> Hom<2> {
-    let (e, f, g, h) = (x.q - x.p, x.s - x.r, x.r - x.p, x.p - o);
-    let m = larger(larger(norm2(e), norm2(f)), larger(norm2(g), norm2(h)));
-    let d = e.perp_dot(f);
-    let t = g.perp_dot(f);
+    let c = &x.cache;
+    let (e, h) = (x.q - x.p, x.p - o);
+    let m = larger(c.m, norm3(h));
     let m2 = m * m;
     Hom {
-        l: (h * d + e * t).to_array(),
-        w: d,
-        el: SSI_L * (m2 * m),
-        ew: SSI_W * m2,
+        l: (h * c.d - e * c.p).to_array(),
+        w: c.d,
+        el: LPI_L * (m2 * m2),
+        ew: LPI_W * (c.m * c.m * c.m),
         scale: m,
+        least: c.m,
         explicit: false,
     }
 }
 
-/// The certified sign of a [`Tpi`]'s weight `W = n_u . (n_v x n_w)`,
-/// `None` when the filter cannot tell (the construction's exact stage then
-/// decides). Bound [`TPI_W`], with `M` over the planes' own differences.
-pub(super) fn tpi_weight_sign(x: &Tpi) -> Option<Sign> {
+/// The part of a [`Tpi`]'s filter that does not depend on the origin: the
+/// rounded normals `n_i`, their cross products `c_u = n_v x n_w`, ..., the
+/// weight `W = n_u . c_u`, and the scale `M` of the planes' differences
+/// `i1 - i0`, `i2 - i0`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct TpiCache {
+    n: [DVec3; 3],
+    c: [DVec3; 3],
+    w: f64,
+    pub(super) m: f64,
+}
+
+/// [`TpiCache`] of the planes.
+pub(super) fn tpi_cache(planes: &[[DVec3; 3]; 3]) -> TpiCache {
     let mut m = 0.0;
-    let n = x.planes.map(|[p0, p1, p2]| {
+    let n = planes.map(|[p0, p1, p2]| {
         let (a, b) = (p1 - p0, p2 - p0);
         m = larger(m, larger(norm3(a), norm3(b)));
         a.cross(b)
     });
-    let w = n[0].dot(n[1].cross(n[2]));
-    let m2 = m * m;
-    // Degree 6 (the weight alone).
-    let bound = TPI_W * (m2 * m2 * m2) * SAFETY;
-    if in_range([(m, false)], 6) {
-        certified(w, bound)
-    } else {
-        None
+    let c = [n[1].cross(n[2]), n[2].cross(n[0]), n[0].cross(n[1])];
+    TpiCache {
+        n,
+        c,
+        w: n[0].dot(c[0]),
+        m,
     }
 }
 
-/// Whether every scale lies in `[2^-R, 2^R]`, `R = 800 / degree` (see the
-/// module docs); an explicit point's scale may also be zero (its row is
-/// then exactly zero, and no bound below certifies a sign from it).
+impl TpiCache {
+    /// The certified sign of `W`, if the filter can tell.
+    pub(super) fn weight_sign(&self) -> Option<Sign> {
+        let m2 = self.m * self.m;
+        weight_in_range(self.m, 6)
+            .then(|| certified(self.w, TPI_W * (m2 * m2 * m2) * SAFETY))
+            .flatten()
+    }
+}
+
+/// A [`Tpi`] relative to `o`: `h_i = n_i . (i0 - o)` and `l = sum h_i c_i`,
+/// `M` raised to cover the `i0 - o`.
 #[inline(always)]
-pub(super) fn in_range<const K: usize>(scales: [(f64, bool); K], degree: u32) -> bool {
+fn tpi(x: &Tpi, o: DVec3) -> Hom<3> {
+    let c = &x.cache;
+    let mut m = c.m;
+    let h: [f64; 3] = core::array::from_fn(|i| {
+        let g = x.planes[i][0] - o;
+        m = larger(m, norm3(g));
+        c.n[i].dot(g)
+    });
+    let m2 = m * m;
+    let m6 = m2 * m2 * m2;
+    let w2 = c.m * c.m;
+    Hom {
+        l: (c.c[0] * h[0] + c.c[1] * h[1] + c.c[2] * h[2]).to_array(),
+        w: c.w,
+        el: TPI_L * (m6 * m),
+        ew: TPI_W * (w2 * w2 * w2),
+        scale: m,
+        least: c.m,
+        explicit: false,
+    }
+}
+
+/// The part of an [`Ssi`]'s filter that does not depend on the origin:
+/// `D = e x f`, `T = (r - p) x f` rounded, and the scale `M` of `e = q -
+/// p`, `f = s - r`, `r - p`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct SsiCache {
+    d: f64,
+    t: f64,
+    pub(super) m: f64,
+}
+
+/// [`SsiCache`] of the inputs.
+pub(super) fn ssi_cache(p: DVec2, q: DVec2, r: DVec2, s: DVec2) -> SsiCache {
+    let (e, f, g) = (q - p, s - r, r - p);
+    SsiCache {
+        d: e.perp_dot(f),
+        t: g.perp_dot(f),
+        m: larger(larger(norm2(e), norm2(f)), norm2(g)),
+    }
+}
+
+impl SsiCache {
+    /// The certified sign of `D`, if the filter can tell.
+    pub(super) fn weight_sign(&self) -> Option<Sign> {
+        weight_in_range(self.m, 2)
+            .then(|| certified(self.d, SSI_W * (self.m * self.m) * SAFETY))
+            .flatten()
+    }
+}
+
+/// An [`Ssi`] relative to `o`: `l = h D + e T`, `h = p - o`.
+#[inline(always)]
+fn ssi(x: &Ssi, o: DVec2) -> Hom<2> {
+    let c = &x.cache;
+    let (e, h) = (x.q - x.p, x.p - o);
+    let m = larger(c.m, norm2(h));
+    Hom {
+        l: (h * c.d + e * c.t).to_array(),
+        w: c.d,
+        el: SSI_L * (m * m * m),
+        ew: SSI_W * (c.m * c.m),
+        scale: m,
+        least: c.m,
+        explicit: false,
+    }
+}
+
+/// Whether every point's scale lies in `[2^-R, 2^R]`, `R = 800 /
+/// degree` (see the module docs); an explicit point's scale may also be
+/// zero (its row is then exactly zero, and no bound below certifies a sign
+/// from it).
+#[inline(always)]
+pub(super) fn in_range<const D: usize>(h: &[Hom<D>], degree: u32) -> bool {
     let r = (800 / degree.max(1)) as i32;
     let (lo, hi) = (pow2(-r), pow2(r));
-    scales
-        .iter()
-        .all(|&(s, explicit)| (lo <= s && s <= hi) || (explicit && s == 0.0))
+    h.iter()
+        .all(|x| (lo <= x.least && x.scale <= hi) | (x.explicit & (x.scale == 0.0)))
+}
+
+/// [`in_range`] for the smallest and the largest scale of a filter's
+/// points (false for NaN).
+#[inline(always)]
+pub(super) fn scales_in_range(least: f64, scale: f64, degree: u32) -> bool {
+    let r = (800 / degree) as i32;
+    pow2(-r) <= least && scale <= pow2(r)
 }
 
 /// What a filter made of its input.
@@ -271,17 +361,6 @@ pub(super) enum Verdict {
     OutOfRange(f64),
     /// In range but too close to zero to certify.
     Uncertain,
-}
-
-impl Verdict {
-    /// The verdict with `f` applied to a certified sign.
-    #[inline(always)]
-    pub(super) fn map(self, f: impl FnOnce(Sign) -> Sign) -> Verdict {
-        match self {
-            Verdict::Certain(s) => Verdict::Certain(f(s)),
-            other => other,
-        }
-    }
 }
 
 /// The exponent `k` to scale every input by, `2^k`, for the second try of

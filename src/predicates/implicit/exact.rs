@@ -25,7 +25,7 @@
 //! 48` bits for the predicate's degree `d`: the points' own values (degree
 //! 7 at most) in `K` limbs, the predicate's in `N`.
 
-use super::any::{AnyPoint2, AnyPoint3, Point};
+use super::any::{AnyPoint2, AnyPoint3, Point, View2, View3};
 use super::points::Tpi;
 use crate::arith::exponent::split;
 use crate::arith::fixed_int::{FixedInt, cross3};
@@ -121,7 +121,11 @@ const fn capacity(limbs: usize) -> u32 {
 /// `2100`-bit span; the points' values then stay in 256 limbs.
 pub(super) fn run(e: &impl Exact) -> Sign {
     let need = e.degree() * e.grid_bits() + 48;
-    if need <= capacity(16) {
+    if need <= capacity(4) {
+        e.eval::<4, 4>()
+    } else if need <= capacity(8) {
+        e.eval::<8, 8>()
+    } else if need <= capacity(16) {
         e.eval::<16, 16>()
     } else if need <= capacity(64) {
         e.eval::<64, 64>()
@@ -172,14 +176,14 @@ fn combine<const K: usize, const D: usize>(
 }
 
 /// A 3D point relative to the origin `o` (integers on the grid `lo`).
-pub(super) fn hom3<const K: usize>(p: &AnyPoint3, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
+pub(super) fn hom3<const K: usize>(p: &View3<'_>, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
     let int = |v: DVec3| ints::<K, 3>(v.to_array(), lo);
     match p {
-        AnyPoint3::Explicit(x) => IntHom {
+        View3::Explicit(x) => IntHom {
             l: sub(&int(*x), o),
             w: Int::from_i64(1),
         },
-        AnyPoint3::Lpi(x) => {
+        View3::Lpi(x) => {
             let [p, q, r, s, t] = [x.p, x.q, x.r, x.s, x.t].map(int);
             let n = cross3::<K, K>(&sub(&s, &r), &sub(&t, &r));
             let e = sub(&q, &p);
@@ -190,7 +194,7 @@ pub(super) fn hom3<const K: usize>(p: &AnyPoint3, o: &[Int<K>; 3], lo: [i32; 3])
                 w: d,
             }
         }
-        AnyPoint3::Tpi(x) => {
+        View3::Tpi(x) => {
             let planes = x.planes.map(|plane| plane.map(int));
             let n = normals(&planes);
             let h: [Int<K>; 3] = core::array::from_fn(|i| dot(&n[i], &sub(&planes[i][0], o)));
@@ -220,14 +224,14 @@ fn normals<const K: usize>(planes: &[[[Int<K>; 3]; 3]; 3]) -> [[Int<K>; 3]; 3] {
 }
 
 /// A 2D point relative to the origin `o` (integers on the grid `lo`).
-pub(super) fn hom2<const K: usize>(p: &AnyPoint2, o: &[Int<K>; 2], lo: [i32; 2]) -> IntHom<K, 2> {
+pub(super) fn hom2<const K: usize>(p: &View2<'_>, o: &[Int<K>; 2], lo: [i32; 2]) -> IntHom<K, 2> {
     let int = |v: DVec2| ints::<K, 2>(v.to_array(), lo);
     match p {
-        AnyPoint2::Explicit(x) => IntHom {
+        View2::Explicit(x) => IntHom {
             l: sub(&int(*x), o),
             w: Int::from_i64(1),
         },
-        AnyPoint2::Ssi(x) => {
+        View2::Ssi(x) => {
             let [p, q, r, s] = [x.p, x.q, x.r, x.s].map(int);
             let (e, f) = (sub(&q, &p), sub(&s, &r));
             let d = perp(&e, &f);

@@ -40,7 +40,7 @@ mod order;
 mod orient;
 mod points;
 
-pub use any::{AnyPoint2, AnyPoint3, IntoAnyPoint2, IntoAnyPoint3};
+pub use any::{AnyPoint2, AnyPoint3, AsAnyPoint2, AsAnyPoint3};
 pub use api::*;
 pub use points::{Lpi, Ssi, Tpi};
 
@@ -52,7 +52,7 @@ use approx::Verdict;
 /// explicit point, or where there is none, an input point of the first.
 #[inline(always)]
 fn pivot<P: Point<D>, const D: usize>(p: &[P]) -> ([f64; D], Option<usize>) {
-    match p.iter().position(|x| x.explicit().is_some()) {
+    match p.iter().position(|x| x.is_explicit()) {
         Some(j) => (p[j].anchor(), Some(j)),
         None => (p[0].anchor(), None),
     }
@@ -64,35 +64,57 @@ fn with_weights<P: Point<D>, const D: usize>(s: Sign, p: &[P]) -> Sign {
     p.iter().fold(s, |s, x| s.product(x.weight_sign()))
 }
 
-/// The ladder (see the module docs): `filter` on the points, then on the
-/// points scaled by a power of two when a scale was out of range, then
-/// `exact` on the points as given.
+/// A predicate on `K` points of `D` dimensions, as the ladder runs it.
+trait Predicate<const D: usize, const K: usize> {
+    /// The filter on `p` (the points as given, or scaled).
+    fn filter<P: Point<D>>(&self, p: &[P; K]) -> Verdict;
+    /// The exact sign on `p`.
+    fn exact<P: Point<D>>(&self, p: &[P; K]) -> Sign;
+}
+
+/// The ladder (see the module docs): the filter on the points, then on the
+/// points scaled by a power of two when a scale was out of range, then the
+/// exact stage on the points as given.
 #[inline(always)]
-fn ladder<P: Point<D>, const D: usize, const K: usize>(
+fn ladder<Q: Predicate<D, K>, P: Point<D>, const D: usize, const K: usize>(
+    q: &Q,
     p: [P; K],
-    filter: impl Fn(&[P; K]) -> Verdict,
-    exact: impl FnOnce(&[P; K]) -> Sign,
 ) -> Sign {
-    match filter(&p) {
+    match q.filter(&p) {
         Verdict::Certain(s) => s,
-        Verdict::Uncertain => exact(&p),
-        Verdict::OutOfRange(largest) => {
-            let largest_coordinate = || {
-                let mut m = 0.0f64;
-                for x in &p {
-                    x.for_each_input(|v| v.iter().for_each(|c| m = m.max(c.abs())));
-                }
-                m
-            };
-            match approx::rescaling(largest, largest_coordinate) {
-                Some(k) => match filter(&p.map(|x| x.scaled(k))) {
-                    Verdict::Certain(s) => s,
-                    _ => exact(&p),
-                },
-                None => exact(&p),
+        verdict => declined(q, p, verdict),
+    }
+}
+
+/// The ladder after the filter declined. A NaN or infinite explicit
+/// point ends here, as `Zero`: no filter certifies a sign from one (every
+/// coordinate enters the filter's value through products, so such a point
+/// makes the value NaN or infinite, or its bound infinite).
+#[cold]
+#[inline(never)]
+fn declined<Q: Predicate<D, K>, P: Point<D>, const D: usize, const K: usize>(
+    q: &Q,
+    p: [P; K],
+    verdict: Verdict,
+) -> Sign {
+    if !p.iter().all(|x| x.is_finite()) {
+        return Sign::Zero;
+    }
+    if let Verdict::OutOfRange(largest) = verdict {
+        let largest_coordinate = || {
+            let mut m = 0.0f64;
+            for x in &p {
+                x.for_each_input(|v| v.iter().for_each(|c| m = m.max(c.abs())));
             }
+            m
+        };
+        if let Some(k) = approx::rescaling(largest, largest_coordinate)
+            && let Verdict::Certain(s) = q.filter(&p.map(|x| x.scaled(k)))
+        {
+            return s;
         }
     }
+    q.exact(&p)
 }
 
 /// The largest scale of a filter's points.
@@ -100,3 +122,6 @@ fn ladder<P: Point<D>, const D: usize, const K: usize>(
 fn largest_scale<const D: usize>(h: &[approx::Hom<D>]) -> f64 {
     h.iter().fold(0.0, |m, x| m.max(x.scale))
 }
+
+#[cfg(test)]
+mod bound_tests;

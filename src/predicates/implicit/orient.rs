@@ -11,10 +11,11 @@
 //! (-1)^(i+1) w_i det[l_k, k != i]` (`(-1)^i` in the plane): degree one
 //! less than the sum of all of them.
 
-use super::any::{AnyPoint2, AnyPoint3, Point};
+use super::any::{Point, View2, View3};
 use super::approx::{self, Hom, SAFETY, Verdict, certified, det2_bounded, det3_bounded};
 use super::exact::{self, Exact, Grid, Int, IntHom};
-use super::{ladder, largest_scale, pivot, with_weights};
+use super::{Predicate, ladder, largest_scale, pivot, with_weights};
+use crate::arith::magnitude::{larger, smaller};
 use crate::arith::roundoff::U;
 use crate::sign::Sign;
 use glam::{DVec2, DVec3};
@@ -41,71 +42,176 @@ fn alternate(s: Sign, n: usize) -> Sign {
 
 /// orient3d of any four points.
 #[inline(always)]
-pub(super) fn orient3d(p: [AnyPoint3; 4]) -> Sign {
+pub(super) fn orient3d(p: [View3<'_>; 4]) -> Sign {
     if let [
-        AnyPoint3::Explicit(a),
-        AnyPoint3::Explicit(b),
-        AnyPoint3::Explicit(c),
-        AnyPoint3::Explicit(d),
+        View3::Explicit(a),
+        View3::Explicit(b),
+        View3::Explicit(c),
+        View3::Explicit(d),
     ] = p
     {
         return crate::predicates::orient3d::orient3d(a, b, c, d);
     }
-    ladder(p, filter3, |p| exact::run(&Orient3Exact::new(p)))
+    if let Some((j, [a, b, c])) = single_implicit3(&p)
+        && let Some(s) = one_implicit3(a, b, c, &p[j])
+    {
+        // Moving the point from place `j` to the last passes `3 - j` others.
+        return alternate(s, 3 - j);
+    }
+    ladder(&Orient3, p)
 }
 
+/// Where exactly one of four points is constructed (not all four
+/// explicit): its place and the explicit points in order.
 #[inline(always)]
-fn filter3(p: &[AnyPoint3; 4]) -> Verdict {
-    let (o, pivot) = pivot(p);
-    let h: [Hom<3>; 4] = core::array::from_fn(|i| p[i].approx(o));
-    if !approx::in_range(h.map(|x| (x.scale, x.explicit)), degree(p, pivot)) {
-        return Verdict::OutOfRange(largest_scale(&h));
-    }
-    let row = |i: usize| (h[i].l, h[i].el);
-    let sign = match pivot {
-        Some(j) => {
-            let (det, bound) = det3_bounded(others::<3>(j).map(row));
-            certified(det, bound).map(|s| alternate(s, j))
-        }
-        None => {
-            let (mut value, mut bound, mut sum) = (0.0, 0.0, 0.0);
-            for i in 0..4 {
-                let (d, b) = det3_bounded(others::<3>(i).map(row));
-                let t = h[i].w * d;
-                value += if i % 2 == 0 { -t } else { t };
-                bound += h[i].w.abs() * b + (d.abs() + b) * h[i].ew;
-                sum += t.abs();
-            }
-            // Each product rounds once and the sum three times: gamma(4).
-            certified(value, (bound + 4.0 * U * sum) * SAFETY).map(|s| -s)
-        }
-    };
-    match sign {
-        Some(s) => Verdict::Certain(with_weights(s, p)),
-        None => Verdict::Uncertain,
+fn single_implicit3(p: &[View3<'_>; 4]) -> Option<(usize, [DVec3; 3])> {
+    use View3::Explicit as E;
+    match *p {
+        [E(a), E(b), E(c), _] => Some((3, [a, b, c])),
+        [E(a), E(b), _, E(d)] => Some((2, [a, b, d])),
+        [E(a), _, E(c), E(d)] => Some((1, [a, c, d])),
+        [_, E(b), E(c), E(d)] => Some((0, [b, c, d])),
+        _ => None,
     }
 }
 
-struct Orient3Exact {
-    p: [AnyPoint3; 4],
+/// The filter for `orient3d(a, b, c, X)`, `X` constructed, straight-line:
+/// [`Orient3`]'s with `a` the origin, the rows `u = b - a`, `v = c - a`
+/// and `X`'s `l`. With `e_u = eps |u|`, `e_v = eps |v|` (`eps` the explicit
+/// rows' bound, `u (1 + 2^-50)`), `det3_bounded`'s bound is `6 |u| |v|
+/// [(2 eps + eps^2 + 5 u) |l| + (1 + eps)^2 E_l]`, below `6 |u| |v| (7 u
+/// |l| + E_l) (1 + 2^-48)`: `SAFETY` covers the factor.
+#[inline(always)]
+fn one_implicit3(a: DVec3, b: DVec3, c: DVec3, x: &View3<'_>) -> Option<Sign> {
+    let h = x.approx(a.to_array());
+    let (u, v, l) = (b - a, c - a, DVec3::from(h.l));
+    let (ru, rv, rl) = (approx::norm3(u), approx::norm3(v), approx::norm3(l));
+    // Zero rows fail the range too: the ladder takes them.
+    let least = smaller(h.least, smaller(ru, rv));
+    if !approx::scales_in_range(least, larger(h.scale, larger(ru, rv)), 2 + x.degrees().l) {
+        return None;
+    }
+    let bound = 6.0 * (ru * rv) * (7.0 * U * rl + h.el) * SAFETY;
+    certified(u.dot(v.cross(l)), bound).map(|s| s.product(x.weight_sign()))
+}
+
+/// orient2d of any three points in the plane.
+#[inline(always)]
+pub(super) fn orient2d(p: [View2<'_>; 3]) -> Sign {
+    if let [View2::Explicit(a), View2::Explicit(b), View2::Explicit(c)] = p {
+        return crate::predicates::orient2d::orient2d(a, b, c);
+    }
+    use View2::Explicit as E;
+    let single = match p {
+        [E(a), E(b), _] => Some((2, a, b)),
+        [E(a), _, E(c)] => Some((1, a, c)),
+        [_, E(b), E(c)] => Some((0, b, c)),
+        _ => None,
+    };
+    if let Some((j, a, b)) = single
+        && let Some(s) = one_implicit2(a, b, &p[j])
+    {
+        // Moving the point from place `j` to the last passes `2 - j` others.
+        return alternate(s, 2 - j);
+    }
+    ladder(&Planar { drop: None }, p)
+}
+
+/// The filter for `orient2d(a, b, X)`, `X` constructed, straight-line:
+/// [`Planar`]'s with `a` the origin, the rows `u = b - a` and `X`'s `l`:
+/// `det2_bounded`'s bound `2 [eps |u| |l| + (1 + eps) |u| E_l + 2 u |u|
+/// |l|]` is below `2 |u| (3 u |l| + E_l) (1 + 2^-48)` (as for
+/// [`one_implicit3`]).
+#[inline(always)]
+fn one_implicit2(a: DVec2, b: DVec2, x: &View2<'_>) -> Option<Sign> {
+    let h = x.approx(a.to_array());
+    let (u, l) = (b - a, DVec2::from(h.l));
+    let (ru, rl) = (approx::norm2(u), approx::norm2(l));
+    // A zero row fails the range too: the ladder takes it.
+    if !approx::scales_in_range(smaller(h.least, ru), larger(h.scale, ru), 1 + x.degrees().l) {
+        return None;
+    }
+    let bound = 2.0 * ru * (3.0 * U * rl + h.el) * SAFETY;
+    certified(u.perp_dot(l), bound).map(|s| s.product(x.weight_sign()))
+}
+
+/// orient2d of three 3D points projected along axis `drop` (onto the axes
+/// `drop + 1`, `drop + 2`, cyclically).
+#[inline(always)]
+pub(super) fn orient2d_projected(p: [View3<'_>; 3], drop: usize) -> Sign {
+    if let [View3::Explicit(a), View3::Explicit(b), View3::Explicit(c)] = p {
+        let (i, j) = ((drop + 1) % 3, (drop + 2) % 3);
+        let pr = |v: DVec3| DVec2::new(v[i], v[j]);
+        return crate::predicates::orient2d::orient2d(pr(a), pr(b), pr(c));
+    }
+    ladder(&Planar { drop: Some(drop) }, p)
+}
+
+/// orient3d (see the module docs).
+struct Orient3;
+
+impl Predicate<3, 4> for Orient3 {
+    #[inline(always)]
+    fn filter<P: Point<3>>(&self, p: &[P; 4]) -> Verdict {
+        let (o, pivot) = pivot(p);
+        let h: [Hom<3>; 4] = [0, 1, 2, 3].map(|i| p[i].approx(o));
+        if !approx::in_range(&h, degree(p, pivot)) {
+            return Verdict::OutOfRange(largest_scale(&h));
+        }
+        let row = |i: usize| (h[i].l, h[i].el);
+        let sign = match pivot {
+            Some(j) => {
+                let (det, bound) = det3_bounded(others::<3>(j).map(row));
+                certified(det, bound).map(|s| alternate(s, j))
+            }
+            None => expanded(&h, |i| det3_bounded(others::<3>(i).map(row)), true).map(|s| -s),
+        };
+        match sign {
+            Some(s) => Verdict::Certain(with_weights(s, p)),
+            None => Verdict::Uncertain,
+        }
+    }
+
+    fn exact<P: Point<3>>(&self, p: &[P; 4]) -> Sign {
+        let (origin, pivot) = pivot(p);
+        exact::run(&Orient3Exact {
+            p: *p,
+            grid: exact::grid(p, false),
+            origin,
+            pivot,
+        })
+    }
+}
+
+/// `sum_i (-1)^(i + odd) w_i d_i` for the determinants `d_i` of the other
+/// rows, each with its bound, certified: each term `w_i d_i` is off by `|w~_i|
+/// B_i + (|d~_i| + B_i) E_w,i`, and rounds once, then the sum `K - 1`
+/// times: `gamma(K)` of the terms' magnitudes.
+#[inline(always)]
+fn expanded<const D: usize, const K: usize>(
+    h: &[Hom<D>; K],
+    det: impl Fn(usize) -> (f64, f64),
+    odd: bool,
+) -> Option<Sign> {
+    let (mut value, mut bound, mut sum) = (0.0, 0.0, 0.0);
+    for (i, hi) in h.iter().enumerate() {
+        let (d, b) = det(i);
+        let t = hi.w * d;
+        value += if (i % 2 == 1) == odd { t } else { -t };
+        bound += hi.w.abs() * b + (d.abs() + b) * hi.ew;
+        sum += t.abs();
+    }
+    certified(value, (bound + K as f64 * U * sum) * SAFETY)
+}
+
+struct Orient3Exact<P> {
+    p: [P; 4],
     grid: Grid<3>,
     origin: [f64; 3],
     pivot: Option<usize>,
 }
 
-impl Orient3Exact {
-    fn new(p: &[AnyPoint3; 4]) -> Self {
-        let (origin, pivot) = pivot(p);
-        Orient3Exact {
-            p: *p,
-            grid: exact::grid(p, false),
-            origin,
-            pivot,
-        }
-    }
-}
-
-impl Exact for Orient3Exact {
+impl<P: Point<3>> Exact for Orient3Exact<P> {
     fn degree(&self) -> u32 {
         degree(&self.p, self.pivot)
     }
@@ -121,131 +227,86 @@ impl Exact for Orient3Exact {
         let rows = |i: usize| others::<3>(i).map(|k| &h[k].l);
         let s = match self.pivot {
             Some(j) => alternate(exact::det3::<K, N>(rows(j)).sign(), j),
-            None => {
-                let mut det = Int::<N>::ZERO;
-                for (i, hi) in h.iter().enumerate() {
-                    let t = Int::<N>::mul(&hi.w, &exact::det3::<K, N>(rows(i)));
-                    det = if i % 2 == 0 { det.sub(&t) } else { det.add(&t) };
-                }
-                -det.sign()
-            }
+            None => -expanded_exact(&h, |i| exact::det3::<K, N>(rows(i)), true),
         };
         with_weights(s, &self.p)
     }
 }
 
-/// orient2d of any three points in the plane.
-#[inline(always)]
-pub(super) fn orient2d(p: [AnyPoint2; 3]) -> Sign {
-    if let [
-        AnyPoint2::Explicit(a),
-        AnyPoint2::Explicit(b),
-        AnyPoint2::Explicit(c),
-    ] = p
-    {
-        return crate::predicates::orient2d::orient2d(a, b, c);
+/// The exact `sum_i (-1)^(i + odd) w_i d_i`.
+fn expanded_exact<const K: usize, const N: usize, const D: usize, const L: usize>(
+    h: &[IntHom<K, D>; L],
+    det: impl Fn(usize) -> Int<N>,
+    odd: bool,
+) -> Sign {
+    let mut sum = Int::<N>::ZERO;
+    for (i, hi) in h.iter().enumerate() {
+        let t = Int::<N>::mul(&hi.w, &det(i));
+        sum = if (i % 2 == 1) == odd {
+            sum.add(&t)
+        } else {
+            sum.sub(&t)
+        };
     }
-    ladder(
-        p,
-        |p| {
-            let (o, pivot) = pivot(p);
-            let h: [Hom<2>; 3] = core::array::from_fn(|i| p[i].approx(o));
-            filter2(h, degree(p, pivot), pivot).map(|s| with_weights(s, p))
-        },
-        |p| exact::run(&PlanarExact::new(p, None)),
-    )
+    sum.sign()
 }
 
-/// orient2d of three 3D points projected along axis `drop` (onto the axes
-/// `drop + 1`, `drop + 2`, cyclically).
-#[inline(always)]
-pub(super) fn orient2d_projected(p: [AnyPoint3; 3], drop: usize) -> Sign {
-    let (i, j) = ((drop + 1) % 3, (drop + 2) % 3);
-    if let [
-        AnyPoint3::Explicit(a),
-        AnyPoint3::Explicit(b),
-        AnyPoint3::Explicit(c),
-    ] = p
-    {
-        let pr = |v: DVec3| DVec2::new(v[i], v[j]);
-        return crate::predicates::orient2d::orient2d(pr(a), pr(b), pr(c));
-    }
-    ladder(
-        p,
-        |p| {
-            let (o, pivot) = pivot(p);
-            let h: [Hom<2>; 3] = core::array::from_fn(|k| p[k].approx(o).project(drop));
-            filter2(h, degree(p, pivot), pivot).map(|s| with_weights(s, p))
-        },
-        |p| exact::run(&PlanarExact::new(p, Some(drop))),
-    )
+/// orient2d in the plane, or of 3D points projected along `drop`.
+struct Planar {
+    drop: Option<usize>,
 }
 
-/// The filter of the planar determinant, before the weights' signs.
-#[inline(always)]
-fn filter2(h: [Hom<2>; 3], deg: u32, pivot: Option<usize>) -> Verdict {
-    if !approx::in_range(h.map(|x| (x.scale, x.explicit)), deg) {
-        return Verdict::OutOfRange(largest_scale(&h));
-    }
-    let row = |i: usize| (h[i].l, h[i].el);
-    let sign = match pivot {
-        Some(j) => {
-            let (det, bound) = det2_bounded(others::<2>(j).map(row));
-            certified(det, bound).map(|s| alternate(s, j))
+impl Planar {
+    /// The axes a point's coordinates come from.
+    fn axes(&self) -> [usize; 2] {
+        match self.drop {
+            Some(drop) => [(drop + 1) % 3, (drop + 2) % 3],
+            None => [0, 1],
         }
-        None => {
-            let (mut value, mut bound, mut sum) = (0.0, 0.0, 0.0);
-            for i in 0..3 {
-                let (d, b) = det2_bounded(others::<2>(i).map(row));
-                let t = h[i].w * d;
-                value += if i % 2 == 0 { t } else { -t };
-                bound += h[i].w.abs() * b + (d.abs() + b) * h[i].ew;
-                sum += t.abs();
+    }
+}
+
+impl<const D: usize> Predicate<D, 3> for Planar {
+    #[inline(always)]
+    fn filter<P: Point<D>>(&self, p: &[P; 3]) -> Verdict {
+        let (o, pivot) = pivot(p);
+        let h: [Hom<2>; 3] = [0, 1, 2].map(|i| p[i].approx(o).select(self.axes()));
+        if !approx::in_range(&h, degree(p, pivot)) {
+            return Verdict::OutOfRange(largest_scale(&h));
+        }
+        let row = |i: usize| (h[i].l, h[i].el);
+        let sign = match pivot {
+            Some(j) => {
+                let (det, bound) = det2_bounded(others::<2>(j).map(row));
+                certified(det, bound).map(|s| alternate(s, j))
             }
-            // Each product rounds once and the sum twice: gamma(3).
-            certified(value, (bound + 3.0 * U * sum) * SAFETY)
+            None => expanded(&h, |i| det2_bounded(others::<2>(i).map(row)), false),
+        };
+        match sign {
+            Some(s) => Verdict::Certain(with_weights(s, p)),
+            None => Verdict::Uncertain,
         }
-    };
-    match sign {
-        Some(s) => Verdict::Certain(s),
-        None => Verdict::Uncertain,
+    }
+
+    fn exact<P: Point<D>>(&self, p: &[P; 3]) -> Sign {
+        let (origin, pivot) = pivot(p);
+        exact::run(&PlanarExact {
+            p: *p,
+            grid: exact::grid(p, false),
+            origin,
+            pivot,
+            axes: self.axes(),
+        })
     }
 }
 
-/// The exact planar determinant (in the plane, or of 3D points projected
-/// along `drop`), with the weights' signs.
+/// The exact planar determinant, with the weights' signs.
 struct PlanarExact<P: Point<D>, const D: usize> {
     p: [P; 3],
     grid: Grid<D>,
     origin: [f64; D],
     pivot: Option<usize>,
-    drop: Option<usize>,
-}
-
-impl<P: Point<D>, const D: usize> PlanarExact<P, D> {
-    fn new(p: &[P; 3], drop: Option<usize>) -> Self {
-        let (origin, pivot) = pivot(p);
-        PlanarExact {
-            p: *p,
-            grid: exact::grid(p, false),
-            origin,
-            pivot,
-            drop,
-        }
-    }
-
-    /// A point's integers in the plane.
-    fn planar<const K: usize>(&self, i: usize, o: &[Int<K>; D]) -> IntHom<K, 2> {
-        let h = self.p[i].exact(o, self.grid.lo);
-        let axis = |k: usize| match self.drop {
-            Some(drop) => (drop + 1 + k) % 3,
-            None => k,
-        };
-        IntHom {
-            l: [h.l[axis(0)], h.l[axis(1)]],
-            w: h.w,
-        }
-    }
+    axes: [usize; 2],
 }
 
 impl<P: Point<D>, const D: usize> Exact for PlanarExact<P, D> {
@@ -259,18 +320,17 @@ impl<P: Point<D>, const D: usize> Exact for PlanarExact<P, D> {
 
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let o = exact::ints::<K, D>(self.origin, self.grid.lo);
-        let h: [IntHom<K, 2>; 3] = core::array::from_fn(|i| self.planar(i, &o));
+        let h: [IntHom<K, 2>; 3] = core::array::from_fn(|i| {
+            let h = self.p[i].exact(&o, self.grid.lo);
+            IntHom {
+                l: [h.l[self.axes[0]], h.l[self.axes[1]]],
+                w: h.w,
+            }
+        });
         let rows = |i: usize| others::<2>(i).map(|k| &h[k].l);
         let s = match self.pivot {
             Some(j) => alternate(exact::det2::<K, N>(rows(j)).sign(), j),
-            None => {
-                let mut det = Int::<N>::ZERO;
-                for (i, hi) in h.iter().enumerate() {
-                    let t = Int::<N>::mul(&hi.w, &exact::det2::<K, N>(rows(i)));
-                    det = if i % 2 == 0 { det.add(&t) } else { det.sub(&t) };
-                }
-                det.sign()
-            }
+            None => expanded_exact(&h, |i| exact::det2::<K, N>(rows(i)), false),
         };
         with_weights(s, &self.p)
     }

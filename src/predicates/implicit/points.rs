@@ -7,9 +7,9 @@
 //! otherwise) and keeps the exact sign of its homogeneous weight, which
 //! every predicate on it needs.
 
-use super::approx::{self, SAFETY, norm2, norm3};
+use super::approx::{self, LpiCache, SsiCache, TpiCache};
 use super::exact;
-use crate::arith::exponent::{pow2, scale_pow2};
+use crate::arith::exponent::scale_pow2;
 use crate::arith::sparse_sum::diff;
 use crate::error::InputError;
 use crate::point::{IntoDVec2, IntoDVec3};
@@ -36,7 +36,7 @@ use glam::{DVec2, DVec3};
 /// // A line parallel to the plane is not one point.
 /// assert!(Lpi::new([0.0; 3], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]).is_err());
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Lpi {
     pub(super) p: DVec3,
     pub(super) q: DVec3,
@@ -45,6 +45,15 @@ pub struct Lpi {
     pub(super) t: DVec3,
     /// The exact sign of `D`.
     pub(super) w: Sign,
+    /// The filter's origin-free part.
+    pub(super) cache: LpiCache,
+}
+
+/// Equal when defined by the same input points.
+impl PartialEq for Lpi {
+    fn eq(&self, o: &Lpi) -> bool {
+        [self.p, self.q, self.r, self.s, self.t] == [o.p, o.q, o.r, o.s, o.t]
+    }
 }
 
 impl Lpi {
@@ -72,13 +81,24 @@ impl Lpi {
             t.into_dvec3(),
         ];
         check_finite3(&[("p", p), ("q", q), ("r", r), ("s", s), ("t", t)])?;
-        let w = det3_of_differences([(s, r), (t, r), (q, p)]);
+        let cache = approx::lpi_cache(p, q, r, s, t);
+        let w = cache
+            .weight_sign()
+            .unwrap_or_else(|| det3_of_differences([(s, r), (t, r), (q, p)]));
         if w == Sign::Zero {
             return Err(InputError::NoUniqueIntersection {
                 construction: "Lpi",
             });
         }
-        Ok(Lpi { p, q, r, s, t, w })
+        Ok(Lpi {
+            p,
+            q,
+            r,
+            s,
+            t,
+            w,
+            cache,
+        })
     }
 
     /// The two points of the line, `[p, q]`.
@@ -93,14 +113,15 @@ impl Lpi {
 
     /// The same construction on every input coordinate times `2^k`.
     pub(super) fn scaled(&self, k: i32) -> Lpi {
-        let f = |v: DVec3| scale3(v, k);
+        let [p, q, r, s, t] = [self.p, self.q, self.r, self.s, self.t].map(|v| scale3(v, k));
         Lpi {
-            p: f(self.p),
-            q: f(self.q),
-            r: f(self.r),
-            s: f(self.s),
-            t: f(self.t),
+            p,
+            q,
+            r,
+            s,
+            t,
             w: self.w,
+            cache: approx::lpi_cache(p, q, r, s, t),
         }
     }
 }
@@ -123,11 +144,20 @@ impl Lpi {
 /// );
 /// assert!(x.is_ok());
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Tpi {
     pub(super) planes: [[DVec3; 3]; 3],
     /// The exact sign of `W`.
     pub(super) w: Sign,
+    /// The filter's origin-free part.
+    pub(super) cache: TpiCache,
+}
+
+/// Equal when defined by the same input points.
+impl PartialEq for Tpi {
+    fn eq(&self, o: &Tpi) -> bool {
+        self.planes == o.planes
+    }
 }
 
 impl Tpi {
@@ -148,8 +178,12 @@ impl Tpi {
         let mut x = Tpi {
             planes,
             w: Sign::Zero,
+            cache: approx::tpi_cache(&planes),
         };
-        x.w = approx::tpi_weight_sign(&x).unwrap_or_else(|| exact::tpi_weight_sign(&x));
+        x.w = x
+            .cache
+            .weight_sign()
+            .unwrap_or_else(|| exact::tpi_weight_sign(&x));
         if x.w == Sign::Zero {
             return Err(InputError::NoUniqueIntersection {
                 construction: "Tpi",
@@ -164,9 +198,11 @@ impl Tpi {
     }
 
     pub(super) fn scaled(&self, k: i32) -> Tpi {
+        let planes = self.planes.map(|plane| plane.map(|v| scale3(v, k)));
         Tpi {
-            planes: self.planes.map(|plane| plane.map(|v| scale3(v, k))),
+            planes,
             w: self.w,
+            cache: approx::tpi_cache(&planes),
         }
     }
 }
@@ -186,7 +222,7 @@ impl Tpi {
 /// // Parallel lines.
 /// assert!(Ssi::new([0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 2.0]).is_err());
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Ssi {
     pub(super) p: DVec2,
     pub(super) q: DVec2,
@@ -194,6 +230,15 @@ pub struct Ssi {
     pub(super) s: DVec2,
     /// The exact sign of `D`.
     pub(super) w: Sign,
+    /// The filter's origin-free part.
+    pub(super) cache: SsiCache,
+}
+
+/// Equal when defined by the same input points.
+impl PartialEq for Ssi {
+    fn eq(&self, o: &Ssi) -> bool {
+        [self.p, self.q, self.r, self.s] == [o.p, o.q, o.r, o.s]
+    }
 }
 
 impl Ssi {
@@ -218,13 +263,23 @@ impl Ssi {
             s.into_dvec2(),
         ];
         check_finite2(&[("p", p), ("q", q), ("r", r), ("s", s)])?;
-        let w = cross_of_differences((q, p), (s, r));
+        let cache = approx::ssi_cache(p, q, r, s);
+        let w = cache
+            .weight_sign()
+            .unwrap_or_else(|| cross_of_differences((q, p), (s, r)));
         if w == Sign::Zero {
             return Err(InputError::NoUniqueIntersection {
                 construction: "Ssi",
             });
         }
-        Ok(Ssi { p, q, r, s, w })
+        Ok(Ssi {
+            p,
+            q,
+            r,
+            s,
+            w,
+            cache,
+        })
     }
 
     /// The two lines, each as its two points: `[[p, q], [r, s]]`.
@@ -233,13 +288,14 @@ impl Ssi {
     }
 
     pub(super) fn scaled(&self, k: i32) -> Ssi {
-        let f = |v: DVec2| scale2(v, k);
+        let [p, q, r, s] = [self.p, self.q, self.r, self.s].map(|v| scale2(v, k));
         Ssi {
-            p: f(self.p),
-            q: f(self.q),
-            r: f(self.r),
-            s: f(self.s),
+            p,
+            q,
+            r,
+            s,
             w: self.w,
+            cache: approx::ssi_cache(p, q, r, s),
         }
     }
 }
@@ -252,41 +308,17 @@ pub(super) fn scale3(v: DVec3, k: i32) -> DVec3 {
     DVec3::new(scale_pow2(v.x, k), scale_pow2(v.y, k), scale_pow2(v.z, k))
 }
 
-/// `47 u`: the bound of `approx`'s `LPI_W` for `det[a - b, ...]` of three
-/// rounded differences (`E_D <= 46 u M^3` to first order, see `approx`).
-const DET3_OF_DIFFERENCES: f64 = approx::LPI_W;
-
-/// `9 u`: `e x f` of two rounded differences, each product of exact
-/// differences off by `gamma(4)` at most (the two differences, the product,
-/// the subtraction), the permanent at most `2 M^2`: `8 u M^2` to first
-/// order.
-const CROSS_OF_DIFFERENCES: f64 = approx::SSI_W;
-
-/// The exact sign of `det[a0 - b0, a1 - b1, a2 - b2]` (finite input): the
-/// rounded determinant where its bound certifies it, the sparse exact terms
-/// otherwise (`predicates::sparse`).
-pub(super) fn det3_of_differences(rows: [(DVec3, DVec3); 3]) -> Sign {
-    let [x, y, z] = rows.map(|(a, b)| a - b);
-    let m = norm3(x).max(norm3(y)).max(norm3(z));
-    let det = x.cross(y).dot(z);
-    // Degree 3: in `[2^-300, 2^300]` nothing overflows and underflow is
-    // negligible (see `approx::in_range`).
-    if (pow2(-300)..=pow2(300)).contains(&m) && det.abs() > DET3_OF_DIFFERENCES * m * m * m * SAFETY
-    {
-        return Sign::of_f64(det);
-    }
+/// The exact sign of `det[a0 - b0, a1 - b1, a2 - b2]` (finite input), by
+/// the sparse exact terms (`predicates::sparse`), where the filter could
+/// not tell.
+fn det3_of_differences(rows: [(DVec3, DVec3); 3]) -> Sign {
     let d = rows.map(|(a, b)| [diff(a.x, b.x), diff(a.y, b.y), diff(a.z, b.z)]);
     sparse::det3(d[0], d[1], d[2]).unwrap_or_else(|| exact::det3_of_differences(rows))
 }
 
-/// The exact sign of `(a0 - b0) x (a1 - b1)` (finite input).
-pub(super) fn cross_of_differences(e: (DVec2, DVec2), f: (DVec2, DVec2)) -> Sign {
-    let (x, y) = (e.0 - e.1, f.0 - f.1);
-    let m = norm2(x).max(norm2(y));
-    let det = x.perp_dot(y);
-    if (pow2(-400)..=pow2(400)).contains(&m) && det.abs() > CROSS_OF_DIFFERENCES * m * m * SAFETY {
-        return Sign::of_f64(det);
-    }
+/// The exact sign of `(a0 - b0) x (a1 - b1)` (finite input), where the
+/// filter could not tell.
+fn cross_of_differences(e: (DVec2, DVec2), f: (DVec2, DVec2)) -> Sign {
     let d = |(a, b): (DVec2, DVec2)| [diff(a.x, b.x), diff(a.y, b.y)];
     sparse::cross2_of(d(e), d(f)).unwrap_or_else(|| exact::cross_of_differences(e, f))
 }
