@@ -19,6 +19,11 @@ pub enum Axis {
     Z,
 }
 
+impl Axis {
+    /// The three axes, in order: `Axis::ALL[k]` is coordinate `k`.
+    pub const ALL: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
+}
+
 /// An axis of the plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Axis2 {
