@@ -465,3 +465,62 @@ fn the_round_trip_example() {
     assert_eq!(oracle::orient3d(pt), Some(0));
     let _ = DVec2::ZERO;
 }
+
+/// The widest exact stages (inputs spanning the whole range on an axis, so
+/// the integers are thousands of bits wide) fit in a thread of 512 KiB of
+/// stack in a release build (debug frames are several times larger).
+#[test]
+fn the_widest_exact_stages_fit_their_stack() {
+    let stack = if cfg!(debug_assertions) {
+        16 << 20
+    } else {
+        512 << 10
+    };
+    let run = std::thread::Builder::new().stack_size(stack).spawn(|| {
+        let mut rng = SplitMix64::new(9);
+        let spread = |i: usize| {
+            if i % 2 == 0 {
+                2f64.powi(900)
+            } else {
+                2f64.powi(-900)
+            }
+        };
+        // One line–plane point beside three explicit points.
+        for _ in 0..20 {
+            let mut c = orient3d_lpi_case(InputClass::NearDegenerate, &mut rng);
+            c.iter_mut().enumerate().for_each(|(i, v)| v.x *= spread(i));
+            let Ok(x) = Lpi::new(c[3], c[4], c[5], c[6], c[7]) else {
+                continue;
+            };
+            let pt = [
+                Pt3::E(a3(c[0])),
+                Pt3::E(a3(c[1])),
+                Pt3::E(a3(c[2])),
+                lpi_pt(&c[3..]),
+            ];
+            assert_eq!(
+                orient3d_implicit(c[0], c[1], c[2], x),
+                sign(oracle::orient3d(pt).unwrap())
+            );
+        }
+        // Four three-plane points: the determinant of degree 27.
+        let mut points = Vec::new();
+        while points.len() < 4 {
+            let c = orient3d_tpi_case(InputClass::Uniform, &mut rng);
+            let mut p = c[3..].to_vec();
+            for (i, v) in p.iter_mut().enumerate() {
+                v.x *= spread(i);
+                v.z *= spread(i + 1);
+            }
+            if let Ok(t) = Tpi::new([p[0], p[1], p[2]], [p[3], p[4], p[5]], [p[6], p[7], p[8]]) {
+                points.push((t, tpi_pt(&p)));
+            }
+        }
+        let want = oracle::orient3d([points[0].1, points[1].1, points[2].1, points[3].1]).unwrap();
+        let got = orient3d_implicit(points[0].0, points[1].0, points[2].0, points[3].0);
+        assert_eq!(got, sign(want));
+    });
+    run.expect("a thread")
+        .join()
+        .expect("no stack overflow, and the oracle's answers");
+}

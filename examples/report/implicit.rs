@@ -15,8 +15,10 @@
 //! Both build their point before the timed loop, as a caller that asks
 //! many questions of one point would. On the `uniform` inputs a third row,
 //! `explicit-orient3d` (`explicit-orient2d` for `orient2d_ssi`), times
-//! exactray's predicate on as many explicit uniform cases in the same run,
-//! so that the cost of a constructed point shows as a ratio.
+//! exactray's predicate on explicit uniform cases kept beside the
+//! constructed ones, in the same timed loops, so that the cost of a
+//! constructed point shows as a ratio (its errors count against those
+//! cases' own exact answers).
 //!
 //! Errors: answers that differ from the exact one
 //! (`exactray_oracle::implicit_oracle`: rational points). A quarter of the
@@ -30,7 +32,7 @@ use exactray::predicates::{
     Axis, Lpi, Ssi, Tpi, cmp_on_axis, orient2d, orient2d_implicit, orient3d, orient3d_implicit,
 };
 use exactray::testing::{
-    InputClass, less_on_axis_lpi_case, orient2d_case, orient2d_ssi_case, orient3d_case,
+    InputClass, SplitMix64, less_on_axis_lpi_case, orient2d_case, orient2d_ssi_case, orient3d_case,
     orient3d_lpi_case, orient3d_tpi_case,
 };
 use exactray_oracle::implicit_oracle::{self as oracle, Pt2, Pt3};
@@ -67,12 +69,15 @@ fn a3(v: DVec3) -> [f64; 3] {
 }
 
 /// One case of each predicate: the inputs, the constructed points and the
-/// rounded ones.
+/// rounded ones, and beside it an explicit `orient3d` (`orient2d`) case of
+/// the uniform class with its answer, which the `explicit-` rows answer in
+/// the same timed loops.
 struct Lpi3 {
     abc: [DVec3; 3],
     x: Lpi,
     rounded: DVec3,
     truth: i8,
+    explicit: Explicit3,
 }
 
 struct Tpi3 {
@@ -80,6 +85,7 @@ struct Tpi3 {
     x: Tpi,
     rounded: DVec3,
     truth: i8,
+    explicit: Explicit3,
 }
 
 struct Ssi2 {
@@ -87,6 +93,7 @@ struct Ssi2 {
     x: Ssi,
     rounded: DVec2,
     truth: i8,
+    explicit: Explicit2,
 }
 
 struct Axis2Lpi {
@@ -95,12 +102,53 @@ struct Axis2Lpi {
     rounded: [DVec3; 2],
     axis: usize,
     truth: i8,
+    explicit: Explicit3,
 }
+
+/// A uniform explicit `orient3d` case and its exact answer.
+#[derive(Clone, Copy)]
+struct Explicit3([DVec3; 4], i8);
+
+/// A uniform explicit `orient2d` case and its exact answer.
+#[derive(Clone, Copy)]
+struct Explicit2([DVec2; 3], i8);
+
+fn explicit3(rng: &mut SplitMix64) -> Explicit3 {
+    let c = orient3d_case(InputClass::Uniform, rng);
+    Explicit3(
+        c,
+        exactray_oracle::oracle::orient3d(a3(c[0]), a3(c[1]), a3(c[2]), a3(c[3])),
+    )
+}
+
+fn explicit2(rng: &mut SplitMix64) -> Explicit2 {
+    let c = orient2d_case(InputClass::Uniform, rng);
+    let a = |i: usize| c[i].to_array();
+    Explicit2(c, exactray_oracle::oracle::orient2d(a(0), a(1), a(2)))
+}
+
+/// A case's answer key: the method under test reads the constructed case,
+/// an `explicit-` one the explicit case beside it.
+trait Truth {
+    fn truth(&self, method: &str) -> i8;
+}
+
+macro_rules! truth {
+    ($($t:ident),*) => {$(
+        impl Truth for $t {
+            fn truth(&self, method: &str) -> i8 {
+                if method.starts_with("explicit-") { self.explicit.1 } else { self.truth }
+            }
+        }
+    )*};
+}
+truth!(Lpi3, Tpi3, Ssi2, Axis2Lpi);
 
 const AXES: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
 
 fn lpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Lpi3> {
     let mut rng = cfg.rng("implicit/orient3d_lpi", class.name());
+    let mut side = cfg.rng("implicit/explicit3", class.name());
     (0..n)
         .map(|_| {
             let c = orient3d_lpi_case(class, &mut rng);
@@ -116,6 +164,7 @@ fn lpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Lpi3> {
                 x: Lpi::new(l[0], l[1], l[2], l[3], l[4]).expect("valid construction"),
                 rounded: round_lpi(l),
                 truth: truth.expect("valid construction"),
+                explicit: explicit3(&mut side),
             }
         })
         .collect()
@@ -123,6 +172,7 @@ fn lpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Lpi3> {
 
 fn tpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Tpi3> {
     let mut rng = cfg.rng("implicit/orient3d_tpi", class.name());
+    let mut side = cfg.rng("implicit/explicit3", class.name());
     (0..n)
         .map(|_| {
             let c = orient3d_tpi_case(class, &mut rng);
@@ -138,6 +188,7 @@ fn tpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Tpi3> {
                 x: Tpi::new(planes[0], planes[1], planes[2]).expect("valid construction"),
                 rounded: round_tpi(planes),
                 truth: truth.expect("valid construction"),
+                explicit: explicit3(&mut side),
             }
         })
         .collect()
@@ -145,6 +196,7 @@ fn tpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Tpi3> {
 
 fn ssi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Ssi2> {
     let mut rng = cfg.rng("implicit/orient2d_ssi", class.name());
+    let mut side = cfg.rng("implicit/explicit2", class.name());
     (0..n)
         .map(|_| {
             let c = orient2d_ssi_case(class, &mut rng);
@@ -159,6 +211,7 @@ fn ssi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Ssi2> {
                 x: Ssi::new(l[0], l[1], l[2], l[3]).expect("valid construction"),
                 rounded: round_ssi(l),
                 truth: truth.expect("valid construction"),
+                explicit: explicit2(&mut side),
             }
         })
         .collect()
@@ -166,6 +219,7 @@ fn ssi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Ssi2> {
 
 fn axis_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Axis2Lpi> {
     let mut rng = cfg.rng("implicit/less_on_axis_lpi", class.name());
+    let mut side = cfg.rng("implicit/explicit3", class.name());
     (0..n)
         .map(|_| {
             let (c, axis) = less_on_axis_lpi_case(class, &mut rng);
@@ -181,6 +235,7 @@ fn axis_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Axis2Lpi> {
                 rounded: [round_lpi(l), round_lpi(m)],
                 axis,
                 truth: truth.expect("valid construction") as i8,
+                explicit: explicit3(&mut side),
             }
         })
         .collect()
@@ -193,11 +248,10 @@ fn cmp_rounded(x: f64, y: f64) -> i8 {
 }
 
 /// One row per method on `cases`.
-fn rows_of<C>(
+fn rows_of<C: Truth>(
     cfg: &Config,
     inputs: String,
     cases: &[C],
-    truth: impl Fn(&C) -> i8,
     methods: &[Box<dyn Measure<C, i8>>],
 ) -> Vec<Row> {
     let timed = &cases[..cfg.working_set.min(cases.len())];
@@ -211,109 +265,107 @@ fn rows_of<C>(
             inputs: inputs.clone(),
             ns_per_op,
             cases: cases.len() as u64,
-            errors: cases.iter().filter(|c| m.answer(c) != truth(c)).count() as u64,
+            errors: cases
+                .iter()
+                .filter(|c| m.answer(c) != c.truth(m.name()))
+                .count() as u64,
             max_ulps: None,
             max_bound_ulps: None,
         })
         .collect()
 }
 
-/// The explicit predicate's time on as many uniform cases, in the same
-/// run: `(orient3d, orient2d)`, each as a row under `inputs`.
-fn explicit_rows(cfg: &Config, n: usize) -> (Row, Row) {
-    let mut rng = cfg.rng("implicit/explicit", "uniform");
-    let c3: Vec<[DVec3; 4]> = (0..n)
-        .map(|_| orient3d_case(InputClass::Uniform, &mut rng))
-        .collect();
-    let c2: Vec<[DVec2; 3]> = (0..n)
-        .map(|_| orient2d_case(InputClass::Uniform, &mut rng))
-        .collect();
-    let m3 = [method("explicit-orient3d", |c: &[DVec3; 4]| {
-        orient3d(c[0], c[1], c[2], c[3]).as_i8()
-    })];
-    let m2 = [method("explicit-orient2d", |c: &[DVec2; 3]| {
-        orient2d(c[0], c[1], c[2]).as_i8()
-    })];
-    let e3 =
-        |c: &[DVec3; 4]| exactray_oracle::oracle::orient3d(a3(c[0]), a3(c[1]), a3(c[2]), a3(c[3]));
-    let e2 = |c: &[DVec2; 3]| {
-        exactray_oracle::oracle::orient2d(c[0].to_array(), c[1].to_array(), c[2].to_array())
-    };
-    let r3 = rows_of(cfg, String::new(), &c3, e3, &m3).remove(0);
-    let r2 = rows_of(cfg, String::new(), &c2, e2, &m2).remove(0);
-    (r3, r2)
+/// The explicit predicate beside the constructed one, on `uniform` only.
+fn explicit_orient3d<C: 'static>(
+    class: InputClass,
+    get: fn(&C) -> &Explicit3,
+) -> Option<Box<dyn Measure<C, i8>>> {
+    (class == InputClass::Uniform).then(|| {
+        method("explicit-orient3d", move |c: &C| {
+            let Explicit3(p, _) = get(c);
+            orient3d(p[0], p[1], p[2], p[3]).as_i8()
+        })
+    })
 }
 
 pub fn run(cfg: &Config) -> Vec<Row> {
     let n = cfg.cases / 4;
     let mut rows = Vec::new();
-    let (explicit3, explicit2) = explicit_rows(cfg, n);
-    let with_explicit = |mut r: Vec<Row>, class: InputClass, e: &Row| {
-        if class == InputClass::Uniform {
-            r.push(Row {
-                inputs: r[0].inputs.clone(),
-                ..e.clone()
-            });
-        }
-        r
-    };
     for class in InputClass::ALL {
         let name = |pred: &str| format!("{pred}:{}", class.name());
         let cases = lpi_cases(cfg, class, n);
-        let methods = [
-            method("exactray", |c: &Lpi3| {
+        let methods: Vec<_> = [
+            Some(method("exactray", |c: &Lpi3| {
                 orient3d_implicit(c.abc[0], c.abc[1], c.abc[2], &c.x).as_i8()
-            }),
-            method("round-then-exact", |c: &Lpi3| {
+            })),
+            Some(method("round-then-exact", |c: &Lpi3| {
                 orient3d(c.abc[0], c.abc[1], c.abc[2], c.rounded).as_i8()
-            }),
-        ];
-        let r = rows_of(cfg, name("orient3d_lpi"), &cases, |c| c.truth, &methods);
-        rows.extend(with_explicit(r, class, &explicit3));
+            })),
+            explicit_orient3d(class, |c: &Lpi3| &c.explicit),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        rows.extend(rows_of(cfg, name("orient3d_lpi"), &cases, &methods));
 
         let cases = tpi_cases(cfg, class, n);
-        let methods = [
-            method("exactray", |c: &Tpi3| {
+        let methods: Vec<_> = [
+            Some(method("exactray", |c: &Tpi3| {
                 orient3d_implicit(c.abc[0], c.abc[1], c.abc[2], &c.x).as_i8()
-            }),
-            method("round-then-exact", |c: &Tpi3| {
+            })),
+            Some(method("round-then-exact", |c: &Tpi3| {
                 orient3d(c.abc[0], c.abc[1], c.abc[2], c.rounded).as_i8()
-            }),
-        ];
-        let r = rows_of(cfg, name("orient3d_tpi"), &cases, |c| c.truth, &methods);
-        rows.extend(with_explicit(r, class, &explicit3));
+            })),
+            explicit_orient3d(class, |c: &Tpi3| &c.explicit),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        rows.extend(rows_of(cfg, name("orient3d_tpi"), &cases, &methods));
 
         let cases = ssi_cases(cfg, class, n);
-        let methods = [
-            method("exactray", |c: &Ssi2| {
+        let explicit = (class == InputClass::Uniform).then(|| {
+            method("explicit-orient2d", |c: &Ssi2| {
+                let Explicit2(p, _) = c.explicit;
+                orient2d(p[0], p[1], p[2]).as_i8()
+            })
+        });
+        let methods: Vec<_> = [
+            Some(method("exactray", |c: &Ssi2| {
                 orient2d_implicit(c.ab[0], c.ab[1], &c.x).as_i8()
-            }),
-            method("round-then-exact", |c: &Ssi2| {
+            })),
+            Some(method("round-then-exact", |c: &Ssi2| {
                 orient2d(c.ab[0], c.ab[1], c.rounded).as_i8()
-            }),
-        ];
-        let r = rows_of(cfg, name("orient2d_ssi"), &cases, |c| c.truth, &methods);
-        rows.extend(with_explicit(r, class, &explicit2));
+            })),
+            explicit,
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        rows.extend(rows_of(cfg, name("orient2d_ssi"), &cases, &methods));
 
         let cases = axis_cases(cfg, class, n);
-        let methods = [
-            method("exactray", |c: &Axis2Lpi| {
+        let methods: Vec<_> = [
+            Some(method("exactray", |c: &Axis2Lpi| {
                 cmp_on_axis(&c.x, &c.y, AXES[c.axis]) as i8
-            }),
-            method("round-then-exact", |c: &Axis2Lpi| {
+            })),
+            Some(method("round-then-exact", |c: &Axis2Lpi| {
                 cmp_rounded(c.rounded[0][c.axis], c.rounded[1][c.axis])
-            }),
-        ];
-        let r = rows_of(cfg, name("less_on_axis_lpi"), &cases, |c| c.truth, &methods);
-        rows.extend(with_explicit(r, class, &explicit3));
+            })),
+            explicit_orient3d(class, |c: &Axis2Lpi| &c.explicit),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        rows.extend(rows_of(cfg, name("less_on_axis_lpi"), &cases, &methods));
     }
     note(
         FAMILY,
         format!(
             "implicit: {n} cases per class (a quarter of the run's); each method builds its point \
-             before the timed loop. `explicit-orient3d` / `explicit-orient2d` on the uniform rows: \
-             exactray's predicate on {n} explicit uniform cases in the same run ({:.2} / {:.2} ns).",
-            explicit3.ns_per_op, explicit2.ns_per_op
+             before the timed loop. On the uniform rows, `explicit-orient3d` (`explicit-orient2d` \
+             for orient2d_ssi) is exactray's predicate on explicit uniform cases, timed in the same \
+             loops as the other methods of the row."
         ),
     );
     rows

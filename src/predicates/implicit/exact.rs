@@ -26,10 +26,9 @@
 //! 7 at most) in `K` limbs, the predicate's in `N`.
 
 use super::any::{AnyPoint2, AnyPoint3, Point, View2, View3};
-use super::points::Tpi;
+use super::points::{Lpi, Tpi};
 use crate::arith::exponent::split;
-use crate::arith::fixed_int::{FixedInt, cross3};
-use crate::predicates::orient3d::det3_wide;
+use crate::arith::fixed_int::FixedInt;
 use crate::sign::Sign;
 use glam::{DVec2, DVec3};
 
@@ -141,6 +140,7 @@ pub(super) type Int<const K: usize> = FixedInt<K>;
 
 /// A point's exact homogeneous coordinates `w (X - o)` and weight `w`, on
 /// the grid.
+#[derive(Clone, Copy)]
 pub(super) struct IntHom<const K: usize, const D: usize> {
     pub(super) l: [Int<K>; D],
     pub(super) w: Int<K>,
@@ -156,13 +156,20 @@ fn sub<const K: usize, const D: usize>(a: &[Int<K>; D], b: &[Int<K>; D]) -> [Int
 }
 
 fn dot<const K: usize>(a: &[Int<K>; 3], b: &[Int<K>; 3]) -> Int<K> {
-    Int::mul(&a[0], &b[0])
-        .add(&Int::mul(&a[1], &b[1]))
-        .add(&Int::mul(&a[2], &b[2]))
+    mul(&a[0], &b[0])
+        .add(&mul(&a[1], &b[1]))
+        .add(&mul(&a[2], &b[2]))
+}
+
+fn cross<const K: usize>(a: &[Int<K>; 3], b: &[Int<K>; 3]) -> [Int<K>; 3] {
+    core::array::from_fn(|k| {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        mul::<K, K, K>(&a[i], &b[j]).sub(&mul(&a[j], &b[i]))
+    })
 }
 
 fn perp<const K: usize>(a: &[Int<K>; 2], b: &[Int<K>; 2]) -> Int<K> {
-    Int::mul(&a[0], &b[1]).sub(&Int::mul(&a[1], &b[0]))
+    mul(&a[0], &b[1]).sub(&mul(&a[1], &b[0]))
 }
 
 /// `a s - b t`, componentwise.
@@ -172,55 +179,76 @@ fn combine<const K: usize, const D: usize>(
     b: &[Int<K>; D],
     t: &Int<K>,
 ) -> [Int<K>; D] {
-    core::array::from_fn(|k| Int::mul(&a[k], s).sub(&Int::mul(&b[k], t)))
+    core::array::from_fn(|k| mul(&a[k], s).sub(&mul(&b[k], t)))
 }
 
 /// A 3D point relative to the origin `o` (integers on the grid `lo`).
+/// Each construction is its own function (and a plane at a time), so that
+/// their integers are never on the stack together.
 pub(super) fn hom3<const K: usize>(p: &View3<'_>, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
-    let int = |v: DVec3| ints::<K, 3>(v.to_array(), lo);
     match p {
         View3::Explicit(x) => IntHom {
-            l: sub(&int(*x), o),
+            l: sub(&ints(x.to_array(), lo), o),
             w: Int::from_i64(1),
         },
-        View3::Lpi(x) => {
-            let [p, q, r, s, t] = [x.p, x.q, x.r, x.s, x.t].map(int);
-            let n = cross3::<K, K>(&sub(&s, &r), &sub(&t, &r));
-            let e = sub(&q, &p);
-            let d = dot(&n, &e);
-            let pp = dot(&n, &sub(&p, &r));
-            IntHom {
-                l: combine(&sub(&p, o), &d, &e, &pp),
-                w: d,
-            }
-        }
-        View3::Tpi(x) => {
-            let planes = x.planes.map(|plane| plane.map(int));
-            let n = normals(&planes);
-            let h: [Int<K>; 3] = core::array::from_fn(|i| dot(&n[i], &sub(&planes[i][0], o)));
-            let c = [
-                cross3::<K, K>(&n[1], &n[2]),
-                cross3::<K, K>(&n[2], &n[0]),
-                cross3::<K, K>(&n[0], &n[1]),
-            ];
-            let l = core::array::from_fn(|k| {
-                Int::mul(&c[0][k], &h[0])
-                    .add(&Int::mul(&c[1][k], &h[1]))
-                    .add(&Int::mul(&c[2][k], &h[2]))
-            });
-            IntHom {
-                l,
-                w: dot(&n[0], &c[0]),
-            }
-        }
+        View3::Lpi(x) => lpi(x, o, lo),
+        View3::Tpi(x) => tpi(x, o, lo),
     }
 }
 
-/// The planes' normals `n_i = (i1 - i0) x (i2 - i0)`.
-fn normals<const K: usize>(planes: &[[[Int<K>; 3]; 3]; 3]) -> [[Int<K>; 3]; 3] {
-    planes
-        .each_ref()
-        .map(|[p0, p1, p2]| cross3::<K, K>(&sub(p1, p0), &sub(p2, p0)))
+#[inline(never)]
+fn lpi<const K: usize>(x: &Lpi, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
+    let n = cross(&difference(x.s, x.r, lo), &difference(x.t, x.r, lo));
+    let e = difference(x.q, x.p, lo);
+    let d = dot(&n, &e);
+    let pp = dot(&n, &difference(x.p, x.r, lo));
+    IntHom {
+        l: combine(&sub(&ints(x.p.to_array(), lo), o), &d, &e, &pp),
+        w: d,
+    }
+}
+
+/// `a - b` as integers on the grid `lo`.
+#[inline(never)]
+fn difference<const K: usize>(a: DVec3, b: DVec3, lo: [i32; 3]) -> [Int<K>; 3] {
+    sub(&ints(a.to_array(), lo), &ints(b.to_array(), lo))
+}
+
+#[inline(never)]
+fn tpi<const K: usize>(x: &Tpi, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
+    let mut n = [[Int::ZERO; 3]; 3];
+    let mut h = [Int::ZERO; 3];
+    for (i, plane) in x.planes.iter().enumerate() {
+        (n[i], h[i]) = plane_normal(plane, o, lo);
+    }
+    let c = [
+        cross(&n[1], &n[2]),
+        cross(&n[2], &n[0]),
+        cross(&n[0], &n[1]),
+    ];
+    let l = core::array::from_fn(|k| {
+        mul(&c[0][k], &h[0])
+            .add(&mul(&c[1][k], &h[1]))
+            .add(&mul(&c[2][k], &h[2]))
+    });
+    IntHom {
+        l,
+        w: dot(&n[0], &c[0]),
+    }
+}
+
+/// A plane's normal `n = (p1 - p0) x (p2 - p0)` and offset `h = n . (p0 -
+/// o)`.
+#[inline(never)]
+fn plane_normal<const K: usize>(
+    plane: &[DVec3; 3],
+    o: &[Int<K>; 3],
+    lo: [i32; 3],
+) -> ([Int<K>; 3], Int<K>) {
+    let [p0, p1, p2] = *plane;
+    let n = cross(&difference(p1, p0, lo), &difference(p2, p0, lo));
+    let h = dot(&n, &sub(&ints(p0.to_array(), lo), o));
+    (n, h)
 }
 
 /// A 2D point relative to the origin `o` (integers on the grid `lo`).
@@ -245,15 +273,51 @@ pub(super) fn hom2<const K: usize>(p: &View2<'_>, o: &[Int<K>; 2], lo: [i32; 2])
     }
 }
 
-/// `det[x0, x1, x2]` of integer rows.
+/// `a b` into `N` limbs, out of line: the product's scratch (two
+/// magnitudes and a list of non-zero limbs, up to 22 KB at the widest) is
+/// then on the stack once, not at every call site the optimizer would
+/// inline it into.
+#[inline(never)]
+pub(super) fn mul<const N: usize, const A: usize, const B: usize>(
+    a: &Int<A>,
+    b: &Int<B>,
+) -> Int<N> {
+    Int::<N>::mul(a, b)
+}
+
+/// Every point relative to the origin `o`, one at a time (each point's
+/// integers are built in their own frame, then copied in).
+#[inline(never)]
+pub(super) fn homs<P: Point<D>, const K: usize, const D: usize, const L: usize>(
+    p: &[P],
+    o: &[Int<K>; D],
+    lo: [i32; D],
+) -> [IntHom<K, D>; L] {
+    let mut h = [IntHom {
+        l: [Int::ZERO; D],
+        w: Int::ZERO,
+    }; L];
+    for (h, p) in h.iter_mut().zip(p) {
+        *h = p.exact(o, lo);
+    }
+    h
+}
+
+/// `det[x0, x1, x2] = x0 . (x1 x x2)` of integer rows.
+#[inline(never)]
 pub(super) fn det3<const K: usize, const N: usize>(rows: [&[Int<K>; 3]; 3]) -> Int<N> {
-    det3_wide::<K, N, N>(&[*rows[0], *rows[1], *rows[2]])
+    let [x, y, z] = rows;
+    let minor = |i: usize, j: usize| mul::<N, K, K>(&y[i], &z[j]).sub(&mul(&y[j], &z[i]));
+    mul::<N, K, N>(&x[0], &minor(1, 2))
+        .add(&mul(&x[1], &minor(2, 0)))
+        .add(&mul(&x[2], &minor(0, 1)))
 }
 
 /// `det[x0, x1]` of integer rows.
+#[inline(never)]
 pub(super) fn det2<const K: usize, const N: usize>(rows: [&[Int<K>; 2]; 2]) -> Int<N> {
     let [x, y] = rows;
-    Int::<N>::mul(&x[0], &y[1]).sub(&Int::mul(&x[1], &y[0]))
+    mul::<N, K, K>(&x[0], &y[1]).sub(&mul(&x[1], &y[0]))
 }
 
 /// The exact sign of a [`Tpi`]'s weight.
@@ -266,12 +330,13 @@ pub(super) fn tpi_weight_sign(x: &Tpi) -> Sign {
         fn grid_bits(&self) -> u32 {
             self.1.bits
         }
+        #[inline(never)]
         fn eval<const K: usize, const N: usize>(&self) -> Sign {
-            let planes = self
+            let o = [Int::ZERO; 3];
+            let n = self
                 .0
                 .planes
-                .map(|p| p.map(|v| ints::<K, 3>(v.to_array(), self.1.lo)));
-            let n = normals(&planes);
+                .map(|p| plane_normal::<K>(&p, &o, self.1.lo).0);
             det3::<K, N>([&n[0], &n[1], &n[2]]).sign()
         }
     }

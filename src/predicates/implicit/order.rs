@@ -89,12 +89,13 @@ impl<P: Point<D>, const D: usize> Exact for AxisExact<P, D> {
         self.grid.bits
     }
 
+    #[inline(never)]
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let lo = self.grid.lo;
         let o = exact::ints::<K, D>(self.origin, lo);
-        let [x, y]: [IntHom<K, D>; 2] = [self.p[0].exact(&o, lo), self.p[1].exact(&o, lo)];
+        let [x, y]: [IntHom<K, D>; 2] = exact::homs(&self.p, &o, lo);
         let k = self.axis;
-        let v = Int::<N>::mul(&x.l[k], &y.w).sub(&Int::mul(&y.l[k], &x.w));
+        let v = exact::mul::<N, _, _>(&x.l[k], &y.w).sub(&exact::mul(&y.l[k], &x.w));
         with_weights(v.sign(), &self.p)
     }
 }
@@ -163,15 +164,16 @@ impl<P: Point<D>, const D: usize> Exact for AlongExact<P, D> {
         self.grid.bits
     }
 
+    #[inline(never)]
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let lo = self.grid.lo;
         let o = exact::ints::<K, D>(self.p[0].anchor(), lo);
-        let h: [IntHom<K, D>; 3] = core::array::from_fn(|i| self.p[i + 1].exact(&o, lo));
+        let h: [IntHom<K, D>; 3] = exact::homs(&self.p[1..], &o, lo);
         let [d, x, y] = &h;
         let mut v = Int::<N>::ZERO;
         for k in 0..D {
-            let r = Int::<N>::mul(&y.l[k], &x.w).sub(&Int::mul(&x.l[k], &y.w));
-            v = v.add(&Int::mul(&r, &d.l[k]));
+            let r = exact::mul::<N, _, _>(&y.l[k], &x.w).sub(&exact::mul(&x.l[k], &y.w));
+            v = v.add(&exact::mul(&r, &d.l[k]));
         }
         with_weights(v.sign(), &self.p)
     }

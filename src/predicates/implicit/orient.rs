@@ -220,10 +220,11 @@ impl<P: Point<3>> Exact for Orient3Exact<P> {
         self.grid.bits
     }
 
+    #[inline(never)]
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let lo = self.grid.lo;
         let o = exact::ints::<K, 3>(self.origin, lo);
-        let h: [IntHom<K, 3>; 4] = core::array::from_fn(|i| self.p[i].exact(&o, lo));
+        let h: [IntHom<K, 3>; 4] = exact::homs(&self.p, &o, lo);
         let rows = |i: usize| others::<3>(i).map(|k| &h[k].l);
         let s = match self.pivot {
             Some(j) => alternate(exact::det3::<K, N>(rows(j)).sign(), j),
@@ -241,7 +242,7 @@ fn expanded_exact<const K: usize, const N: usize, const D: usize, const L: usize
 ) -> Sign {
     let mut sum = Int::<N>::ZERO;
     for (i, hi) in h.iter().enumerate() {
-        let t = Int::<N>::mul(&hi.w, &det(i));
+        let t = exact::mul::<N, _, _>(&hi.w, &det(i));
         sum = if (i % 2 == 1) == odd {
             sum.add(&t)
         } else {
@@ -318,14 +319,13 @@ impl<P: Point<D>, const D: usize> Exact for PlanarExact<P, D> {
         self.grid.bits
     }
 
+    #[inline(never)]
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let o = exact::ints::<K, D>(self.origin, self.grid.lo);
-        let h: [IntHom<K, 2>; 3] = core::array::from_fn(|i| {
-            let h = self.p[i].exact(&o, self.grid.lo);
-            IntHom {
-                l: [h.l[self.axes[0]], h.l[self.axes[1]]],
-                w: h.w,
-            }
+        let full: [IntHom<K, D>; 3] = exact::homs(&self.p, &o, self.grid.lo);
+        let h = full.map(|h| IntHom {
+            l: [h.l[self.axes[0]], h.l[self.axes[1]]],
+            w: h.w,
         });
         let rows = |i: usize| others::<2>(i).map(|k| &h[k].l);
         let s = match self.pivot {
