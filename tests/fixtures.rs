@@ -351,7 +351,7 @@ fn axis_of(x: f64) -> Result<usize, String> {
 fn crate_orient3d_lpi(f: &[&str]) -> Result<Verdict, String> {
     check_constructed::<24>(f, |v| {
         let x = lpi_of(v, 3)?;
-        Ok(exactray::predicates::orient3d_implicit(p3(v, 0), p3(v, 1), p3(v, 2), x).as_i8())
+        Ok(exactray::predicates::orient3d_implicit(p3(v, 0), p3(v, 1), p3(v, 2), &x).as_i8())
     })
 }
 
@@ -366,7 +366,7 @@ fn crate_orient3d_tpi(f: &[&str]) -> Result<Verdict, String> {
     check_constructed::<36>(f, |v| {
         let plane = |i: usize| [p3(v, i), p3(v, i + 1), p3(v, i + 2)];
         let x = exactray::predicates::Tpi::new(plane(3), plane(6), plane(9))?;
-        Ok(exactray::predicates::orient3d_implicit(p3(v, 0), p3(v, 1), p3(v, 2), x).as_i8())
+        Ok(exactray::predicates::orient3d_implicit(p3(v, 0), p3(v, 1), p3(v, 2), &x).as_i8())
     })
 }
 
@@ -382,7 +382,7 @@ fn oracle_orient3d_tpi(f: &[&str]) -> Result<Verdict, String> {
 fn crate_orient2d_ssi(f: &[&str]) -> Result<Verdict, String> {
     check_constructed::<12>(f, |v| {
         let x = exactray::predicates::Ssi::new(p2(v, 2), p2(v, 3), p2(v, 4), p2(v, 5))?;
-        Ok(exactray::predicates::orient2d_implicit(p2(v, 0), p2(v, 1), x).as_i8())
+        Ok(exactray::predicates::orient2d_implicit(p2(v, 0), p2(v, 1), &x).as_i8())
     })
 }
 
@@ -399,7 +399,7 @@ fn crate_less_on_axis_lpi(f: &[&str]) -> Result<Verdict, String> {
     check_constructed::<31>(f, |v| {
         let (x, y) = (lpi_of(&v[1..], 0)?, lpi_of(&v[1..], 5)?);
         let axes = exactray::predicates::Axis::ALL;
-        Ok(exactray::predicates::cmp_on_axis(x, y, axes[axis]) as i8)
+        Ok(exactray::predicates::cmp_on_axis(&x, &y, axes[axis]) as i8)
     })
 }
 

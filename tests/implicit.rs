@@ -68,18 +68,18 @@ fn orient3d_lpi_every_class() {
             let want = sign(want.expect("valid construction"));
             let x = lpi(&c[3..]);
             assert_eq!(
-                orient3d_implicit(c[0], c[1], c[2], x),
+                orient3d_implicit(c[0], c[1], c[2], &x),
                 want,
                 "{class:?} {c:?}"
             );
             // The point in every position (orient3d alternates).
             assert_eq!(
-                orient3d_implicit(x, c[1], c[2], c[0]),
+                orient3d_implicit(&x, c[1], c[2], c[0]),
                 -want,
                 "{class:?} {c:?}"
             );
             assert_eq!(
-                orient3d_implicit(c[0], x, c[2], c[1]),
+                orient3d_implicit(c[0], &x, c[2], c[1]),
                 -want,
                 "{class:?} {c:?}"
             );
@@ -106,7 +106,7 @@ fn orient3d_tpi_every_class() {
             let want = sign(want.expect("valid construction"));
             let x = tpi(&c[3..]);
             assert_eq!(
-                orient3d_implicit(c[0], c[1], c[2], x),
+                orient3d_implicit(c[0], c[1], c[2], &x),
                 want,
                 "{class:?} {c:?}"
             );
@@ -127,8 +127,8 @@ fn orient2d_ssi_every_class() {
             let x = Pt2::Ssi([a2(2), a2(3), a2(4), a2(5)]);
             let want = sign(oracle::orient2d([Pt2::E(a2(0)), Pt2::E(a2(1)), x]).expect("valid"));
             let s = Ssi::new(c[2], c[3], c[4], c[5]).unwrap();
-            assert_eq!(orient2d_implicit(c[0], c[1], s), want, "{class:?} {c:?}");
-            assert_eq!(orient2d_implicit(s, c[1], c[0]), -want, "{class:?} {c:?}");
+            assert_eq!(orient2d_implicit(c[0], c[1], &s), want, "{class:?} {c:?}");
+            assert_eq!(orient2d_implicit(&s, c[1], c[0]), -want, "{class:?} {c:?}");
         }
     }
 }
@@ -142,12 +142,12 @@ fn less_on_axis_lpi_every_class() {
             let want = oracle::cmp_on_axis3(lpi_pt(&c[..5]), lpi_pt(&c[5..]), axis).unwrap();
             let (x, y) = (lpi(&c[..5]), lpi(&c[5..]));
             assert_eq!(
-                cmp_on_axis(x, y, AXES[axis]),
+                cmp_on_axis(&x, &y, AXES[axis]),
                 want,
                 "{class:?} {c:?} {axis}"
             );
-            assert_eq!(less_on_axis(x, y, AXES[axis]), want == Ordering::Less);
-            assert_eq!(cmp_on_axis(y, x, AXES[axis]), want.reverse());
+            assert_eq!(less_on_axis(&x, &y, AXES[axis]), want == Ordering::Less);
+            assert_eq!(cmp_on_axis(&y, &x, AXES[axis]), want.reverse());
         }
     }
 }
@@ -210,27 +210,27 @@ fn every_combination_of_points() {
         let (pts, pt) = (p.map(|x| x.0), p.map(|x| x.1));
         let want = sign(oracle::orient3d(pt).unwrap());
         assert_eq!(
-            orient3d_implicit(pts[0], pts[1], pts[2], pts[3]),
+            orient3d_implicit(&pts[0], &pts[1], &pts[2], &pts[3]),
             want,
             "{pt:?}"
         );
         let drop = i % 3;
         let want = sign(oracle::orient2d_projected([pt[0], pt[1], pt[2]], drop).unwrap());
         assert_eq!(
-            orient2d_projected(pts[0], pts[1], pts[2], AXES[drop]),
+            orient2d_projected(&pts[0], &pts[1], &pts[2], AXES[drop]),
             want,
             "{pt:?} {drop}"
         );
         let want = oracle::cmp_on_axis3(pt[0], pt[1], drop).unwrap();
         assert_eq!(
-            cmp_on_axis(pts[0], pts[1], AXES[drop]),
+            cmp_on_axis(&pts[0], &pts[1], AXES[drop]),
             want,
             "{pt:?} {drop}"
         );
         let c = orient3d_lpi_case(class, &mut rng);
         let want = oracle::cmp_along3(a3(c[0]), a3(c[1]), pt[2], pt[3]).unwrap();
         assert_eq!(
-            cmp_along_line(c[0], c[1], pts[2], pts[3]),
+            cmp_along_line(c[0], c[1], &pts[2], &pts[3]),
             want,
             "{pt:?} {c:?}"
         );
@@ -241,7 +241,7 @@ fn every_combination_of_points() {
 fn any_point2(class: InputClass, rng: &mut SplitMix64) -> (AnyPoint2, Pt2) {
     let c = orient2d_ssi_case(class, rng);
     let a2 = |i: usize| c[i].to_array();
-    if rng.next_u64() % 3 == 0 {
+    if rng.next_u64().is_multiple_of(3) {
         (AnyPoint2::Explicit(c[0]), Pt2::E(a2(0)))
     } else {
         let s = Ssi::new(c[2], c[3], c[4], c[5]).unwrap();
@@ -257,15 +257,15 @@ fn every_combination_in_the_plane() {
         let p = [(); 3].map(|_| any_point2(class, &mut rng));
         let (pts, pt) = (p.map(|x| x.0), p.map(|x| x.1));
         let want = sign(oracle::orient2d(pt).unwrap());
-        assert_eq!(orient2d_implicit(pts[0], pts[1], pts[2]), want, "{pt:?}");
+        assert_eq!(orient2d_implicit(&pts[0], &pts[1], &pts[2]), want, "{pt:?}");
         let axis = [Axis2::X, Axis2::Y][i % 2];
         let want = oracle::cmp_on_axis2(pt[0], pt[1], i % 2).unwrap();
-        assert_eq!(cmp_on_axis_2d(pts[0], pts[1], axis), want, "{pt:?}");
+        assert_eq!(cmp_on_axis_2d(&pts[0], &pts[1], axis), want, "{pt:?}");
         // Along one of the lines the first point's construction uses.
         let c = orient2d_ssi_case(class, &mut rng);
         let want = oracle::cmp_along2(c[2].to_array(), c[3].to_array(), pt[1], pt[2]).unwrap();
         assert_eq!(
-            cmp_along_line_2d(c[2], c[3], pts[1], pts[2]),
+            cmp_along_line_2d(c[2], c[3], &pts[1], &pts[2]),
             want,
             "{pt:?} {c:?}"
         );
@@ -284,7 +284,7 @@ fn every_scale() {
             InputClass::Degenerate,
         ][i % 3];
         let c = orient3d_lpi_case(class, &mut rng);
-        let want = orient3d_implicit(c[0], c[1], c[2], lpi(&c[3..]));
+        let want = orient3d_implicit(c[0], c[1], c[2], &lpi(&c[3..]));
         let k = (rng.next_u64() % 2001) as i32 - 1000;
         let (s, t) = pow2(k);
         let d = c.map(|v| v * s * t);
@@ -294,13 +294,13 @@ fn every_scale() {
         let Ok(x) = Lpi::new(d[3], d[4], d[5], d[6], d[7]) else {
             panic!("scaled construction {d:?}");
         };
-        assert_eq!(orient3d_implicit(d[0], d[1], d[2], x), want, "2^{k} {c:?}");
+        assert_eq!(orient3d_implicit(d[0], d[1], d[2], &x), want, "2^{k} {c:?}");
         let t3 = orient3d_tpi_case(class, &mut rng);
-        let want = orient3d_implicit(t3[0], t3[1], t3[2], tpi(&t3[3..]));
+        let want = orient3d_implicit(t3[0], t3[1], t3[2], &tpi(&t3[3..]));
         let d = t3.map(|v| v * s * t);
         if d.iter().zip(&t3).all(|(x, y)| (*x / s / t) == *y) {
             assert_eq!(
-                orient3d_implicit(d[0], d[1], d[2], tpi(&d[3..])),
+                orient3d_implicit(d[0], d[1], d[2], &tpi(&d[3..])),
                 want,
                 "2^{k} {t3:?}"
             );
@@ -384,23 +384,23 @@ fn non_finite_inputs_are_errors() {
             Err(e("r"))
         );
         let p = Lpi::new(o, z, [0.0, 0.0, 0.5], [1.0, 0.0, 0.5], [0.0, 1.0, 0.5]).unwrap();
-        assert_eq!(try_orient3d_implicit(o, b, y, p), Err(e("b")));
-        assert_eq!(orient3d_implicit(o, b, y, p), Sign::Zero);
-        assert_eq!(try_cmp_on_axis(p, b, Axis::X), Err(e("y")));
-        assert_eq!(cmp_on_axis(p, b, Axis::X), Ordering::Equal);
-        assert_eq!(try_cmp_along_line(b, o, p, p), Err(e("p")));
+        assert_eq!(try_orient3d_implicit(o, b, y, &p), Err(e("b")));
+        assert_eq!(orient3d_implicit(o, b, y, &p), Sign::Zero);
+        assert_eq!(try_cmp_on_axis(&p, b, Axis::X), Err(e("y")));
+        assert_eq!(cmp_on_axis(&p, b, Axis::X), Ordering::Equal);
+        assert_eq!(try_cmp_along_line(b, o, &p, &p), Err(e("p")));
         let s = Ssi::new([0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]).unwrap();
         assert_eq!(
-            try_orient2d_implicit([0.0, bad], [1.0, 0.0], s),
+            try_orient2d_implicit([0.0, bad], [1.0, 0.0], &s),
             Err(e("a"))
         );
     }
     let p = Lpi::new(o, z, [0.0, 0.0, 0.5], [1.0, 0.0, 0.5], [0.0, 1.0, 0.5]).unwrap();
     assert_eq!(
-        try_cmp_along_line(x, x, p, o),
+        try_cmp_along_line(x, x, &p, o),
         Err(InputError::ZeroDirection)
     );
-    assert_eq!(cmp_along_line(x, x, p, o), Ordering::Equal);
+    assert_eq!(cmp_along_line(x, x, &p, o), Ordering::Equal);
 }
 
 /// Mixed magnitudes inside one construction: the line's points near
@@ -430,7 +430,7 @@ fn mixed_magnitudes_inside_constructions() {
             lpi_pt(&d[3..]),
         ]);
         assert_eq!(
-            orient3d_implicit(d[0], d[1], d[2], x),
+            orient3d_implicit(d[0], d[1], d[2], &x),
             sign(want.unwrap()),
             "{d:?}"
         );
@@ -449,7 +449,7 @@ fn the_round_trip_example() {
     )
     .unwrap();
     let (a, b, c) = ([0.0; 3], [0.0, 0.0, 1.0], [1.0, 3.0, 0.0]);
-    assert_eq!(orient3d_implicit(a, b, c, x), Sign::Zero);
+    assert_eq!(orient3d_implicit(a, b, c, &x), Sign::Zero);
     let pt = [
         Pt3::E(a),
         Pt3::E(b),
@@ -479,7 +479,7 @@ fn the_widest_exact_stages_fit_their_stack() {
     let run = std::thread::Builder::new().stack_size(stack).spawn(|| {
         let mut rng = SplitMix64::new(9);
         let spread = |i: usize| {
-            if i % 2 == 0 {
+            if i.is_multiple_of(2) {
                 2f64.powi(900)
             } else {
                 2f64.powi(-900)
@@ -499,7 +499,7 @@ fn the_widest_exact_stages_fit_their_stack() {
                 lpi_pt(&c[3..]),
             ];
             assert_eq!(
-                orient3d_implicit(c[0], c[1], c[2], x),
+                orient3d_implicit(c[0], c[1], c[2], &x),
                 sign(oracle::orient3d(pt).unwrap())
             );
         }
@@ -517,7 +517,7 @@ fn the_widest_exact_stages_fit_their_stack() {
             }
         }
         let want = oracle::orient3d([points[0].1, points[1].1, points[2].1, points[3].1]).unwrap();
-        let got = orient3d_implicit(points[0].0, points[1].0, points[2].0, points[3].0);
+        let got = orient3d_implicit(&points[0].0, &points[1].0, &points[2].0, &points[3].0);
         assert_eq!(got, sign(want));
     });
     run.expect("a thread")

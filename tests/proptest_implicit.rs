@@ -68,8 +68,8 @@ proptest! {
         match Lpi::new(v[3], v[4], v[5], v[6], v[7]) {
             Ok(x) => {
                 let want = sign(oracle::orient3d(pt).expect("the crate accepted it"));
-                prop_assert_eq!(orient3d_implicit(v[0], v[1], v[2], x), want);
-                prop_assert_eq!(orient3d_implicit(v[1], v[0], v[2], x), -want);
+                prop_assert_eq!(orient3d_implicit(v[0], v[1], v[2], &x), want);
+                prop_assert_eq!(orient3d_implicit(v[1], v[0], v[2], &x), -want);
             }
             // Scaling may flush a construction into one that is not a point.
             Err(e) => {
@@ -90,7 +90,7 @@ proptest! {
         let pt = [Pt3::E(c[0]), Pt3::E(c[1]), Pt3::E(c[2]), Pt3::Tpi(planes)];
         if let Ok(x) = Tpi::new(planes[0], planes[1], planes[2]) {
             let want = sign(oracle::orient3d(pt).expect("the crate accepted it"));
-            prop_assert_eq!(orient3d_implicit(c[0], c[1], c[2], x), want);
+            prop_assert_eq!(orient3d_implicit(c[0], c[1], c[2], &x), want);
         } else {
             prop_assert_eq!(oracle::weight_sign3(&pt[3]), 0);
         }
@@ -108,10 +108,10 @@ proptest! {
         let x = Pt2::Ssi([c[2], c[3], c[4], c[5]]);
         if let Ok(s) = Ssi::new(c[2], c[3], c[4], c[5]) {
             let want = sign(oracle::orient2d([Pt2::E(c[0]), Pt2::E(c[1]), x]).unwrap());
-            prop_assert_eq!(orient2d_implicit(c[0], c[1], s), want);
+            prop_assert_eq!(orient2d_implicit(c[0], c[1], &s), want);
             if c[2] != c[3] {
                 let want = oracle::cmp_along2(c[2], c[3], x, Pt2::E(c[0])).unwrap();
-                prop_assert_eq!(cmp_along_line_2d(c[2], c[3], s, c[0]), want);
+                prop_assert_eq!(cmp_along_line_2d(c[2], c[3], &s, c[0]), want);
             }
         } else {
             prop_assert_eq!(oracle::weight_sign2(&x), 0);
@@ -129,8 +129,8 @@ proptest! {
         let pt = |i: usize| Pt3::Lpi([c[i], c[i + 1], c[i + 2], c[i + 3], c[i + 4]]);
         if let (Ok(x), Ok(y)) = (lpi(0), lpi(5)) {
             let want = oracle::cmp_on_axis3(pt(0), pt(5), axis).unwrap();
-            prop_assert_eq!(cmp_on_axis(x, y, Axis::ALL[axis]), want);
-            prop_assert_eq!(cmp_on_axis(y, x, Axis::ALL[axis]), want.reverse());
+            prop_assert_eq!(cmp_on_axis(&x, &y, Axis::ALL[axis]), want);
+            prop_assert_eq!(cmp_on_axis(&y, &x, Axis::ALL[axis]), want.reverse());
         }
     }
 
@@ -149,9 +149,9 @@ proptest! {
         match Lpi::new(p[3], p[4], p[5], p[6], p[7]) {
             Ok(x) => {
                 let want = oracle::orient3d([Pt3::E(p[0]), Pt3::E(p[1]), Pt3::E(p[2]), pt]).unwrap();
-                prop_assert_eq!(orient3d_implicit(p[0], p[1], p[2], x), sign(want));
+                prop_assert_eq!(orient3d_implicit(p[0], p[1], p[2], &x), sign(want));
                 let want = oracle::cmp_on_axis3(pt, Pt3::E(p[0]), share % 3).unwrap();
-                prop_assert_eq!(cmp_on_axis(x, p[0], Axis::ALL[share % 3]), want);
+                prop_assert_eq!(cmp_on_axis(&x, p[0], Axis::ALL[share % 3]), want);
             }
             Err(_) => prop_assert_eq!(oracle::weight_sign3(&pt), 0),
         }
@@ -168,9 +168,9 @@ fn a_point_against_itself() {
             let c = orient3d_lpi_case(class, &mut rng);
             let x = Lpi::new(c[3], c[4], c[5], c[6], c[7]).unwrap();
             for axis in Axis::ALL {
-                assert_eq!(cmp_on_axis(x, x, axis), Ordering::Equal);
+                assert_eq!(cmp_on_axis(&x, &x, axis), Ordering::Equal);
             }
-            assert_eq!(orient3d_implicit(c[5], c[6], c[7], x), Sign::Zero, "{c:?}");
+            assert_eq!(orient3d_implicit(c[5], c[6], c[7], &x), Sign::Zero, "{c:?}");
             let _ = DVec2::ZERO;
         }
     }

@@ -14,8 +14,8 @@
 //! points, or for the axis comparison the rounded coordinates compared).
 //! Both build their point before the timed loop, as a caller that asks
 //! many questions of one point would. On the `uniform` inputs a third row,
-//! `explicit-orient3d` (`explicit-orient2d` for `orient2d_ssi`), times
-//! exactray's predicate on explicit uniform cases kept beside the
+//! `explicit-orient3d` (and for `orient2d_ssi` also `explicit-orient2d`),
+//! times exactray's explicit predicate on uniform cases kept beside the
 //! constructed ones, in the same timed loops, so that the cost of a
 //! constructed point shows as a ratio (its errors count against those
 //! cases' own exact answers).
@@ -93,7 +93,8 @@ struct Ssi2 {
     x: Ssi,
     rounded: DVec2,
     truth: i8,
-    explicit: Explicit2,
+    explicit: Explicit3,
+    explicit2: Explicit2,
 }
 
 struct Axis2Lpi {
@@ -142,7 +143,17 @@ macro_rules! truth {
         }
     )*};
 }
-truth!(Lpi3, Tpi3, Ssi2, Axis2Lpi);
+truth!(Lpi3, Tpi3, Axis2Lpi);
+
+impl Truth for Ssi2 {
+    fn truth(&self, method: &str) -> i8 {
+        match method {
+            "explicit-orient3d" => self.explicit.1,
+            "explicit-orient2d" => self.explicit2.1,
+            _ => self.truth,
+        }
+    }
+}
 
 const AXES: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
 
@@ -197,6 +208,7 @@ fn tpi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Tpi3> {
 fn ssi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Ssi2> {
     let mut rng = cfg.rng("implicit/orient2d_ssi", class.name());
     let mut side = cfg.rng("implicit/explicit2", class.name());
+    let mut side3 = cfg.rng("implicit/explicit3", class.name());
     (0..n)
         .map(|_| {
             let c = orient2d_ssi_case(class, &mut rng);
@@ -211,7 +223,8 @@ fn ssi_cases(cfg: &Config, class: InputClass, n: usize) -> Vec<Ssi2> {
                 x: Ssi::new(l[0], l[1], l[2], l[3]).expect("valid construction"),
                 rounded: round_ssi(l),
                 truth: truth.expect("valid construction"),
-                explicit: explicit2(&mut side),
+                explicit: explicit3(&mut side3),
+                explicit2: explicit2(&mut side),
             }
         })
         .collect()
@@ -324,9 +337,9 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         rows.extend(rows_of(cfg, name("orient3d_tpi"), &cases, &methods));
 
         let cases = ssi_cases(cfg, class, n);
-        let explicit = (class == InputClass::Uniform).then(|| {
+        let explicit2 = (class == InputClass::Uniform).then(|| {
             method("explicit-orient2d", |c: &Ssi2| {
-                let Explicit2(p, _) = c.explicit;
+                let Explicit2(p, _) = c.explicit2;
                 orient2d(p[0], p[1], p[2]).as_i8()
             })
         });
@@ -337,7 +350,8 @@ pub fn run(cfg: &Config) -> Vec<Row> {
             Some(method("round-then-exact", |c: &Ssi2| {
                 orient2d(c.ab[0], c.ab[1], c.rounded).as_i8()
             })),
-            explicit,
+            explicit_orient3d(class, |c: &Ssi2| &c.explicit),
+            explicit2,
         ]
         .into_iter()
         .flatten()
@@ -363,9 +377,9 @@ pub fn run(cfg: &Config) -> Vec<Row> {
         FAMILY,
         format!(
             "implicit: {n} cases per class (a quarter of the run's); each method builds its point \
-             before the timed loop. On the uniform rows, `explicit-orient3d` (`explicit-orient2d` \
-             for orient2d_ssi) is exactray's predicate on explicit uniform cases, timed in the same \
-             loops as the other methods of the row."
+             before the timed loop. On the uniform rows, `explicit-orient3d` (and for orient2d_ssi \
+             `explicit-orient2d`) is exactray's explicit predicate on uniform cases, timed in the \
+             same loops as the other methods of the row."
         ),
     );
     rows

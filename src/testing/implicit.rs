@@ -22,7 +22,7 @@
 //! let mut rng = SplitMix64::new(3);
 //! let [a, b, c, p, q, r, s, t] = orient3d_lpi_case(InputClass::Degenerate, &mut rng);
 //! let x = Lpi::new(p, q, r, s, t).unwrap();
-//! assert_eq!(orient3d_implicit(a, b, c, x), exactray::Sign::Zero);
+//! assert_eq!(orient3d_implicit(a, b, c, &x), exactray::Sign::Zero);
 //! ```
 
 use super::generators::{InputClass, SplitMix64, scale, step_ulps};
@@ -358,10 +358,10 @@ mod tests {
         for _ in 0..500 {
             let [a, b, c, p, q, r, s, t] = orient3d_lpi_case(InputClass::Degenerate, &mut rng);
             let x = Lpi::new(p, q, r, s, t).unwrap();
-            assert_eq!(orient3d_implicit(a, b, c, x), Sign::Zero);
+            assert_eq!(orient3d_implicit(a, b, c, &x), Sign::Zero);
             let [a, b, p, q, r, s] = orient2d_ssi_case(InputClass::Degenerate, &mut rng);
             assert_eq!(
-                orient2d_implicit(a, b, Ssi::new(p, q, r, s).unwrap()),
+                orient2d_implicit(a, b, &Ssi::new(p, q, r, s).unwrap()),
                 Sign::Zero
             );
         }

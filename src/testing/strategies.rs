@@ -227,7 +227,7 @@ fn near_degenerate_class() -> impl Strategy<Value = InputClass> {
 ///     #![proptest_config(ProptestConfig::with_cases(32))]
 ///     // Swapping two vertices negates the orientation, exactly.
 ///     fn swap_negates(([a, b, c], x) in lpi_near_triangle()) {
-///         prop_assert_eq!(orient3d_implicit(a, b, c, x), -orient3d_implicit(b, a, c, x));
+///         prop_assert_eq!(orient3d_implicit(a, b, c, &x), -orient3d_implicit(b, a, c, &x));
 ///     }
 /// }
 /// # swap_negates();

@@ -14,6 +14,10 @@ use glam::{DVec2, DVec3};
 /// A 3D point a predicate takes: an input point, or a point constructed
 /// from input points.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "kept by value so that it is Copy and needs no allocation; the predicates read it in place"
+)]
 pub enum AnyPoint3 {
     /// An input point, its coordinates exact as given.
     Explicit(DVec3),
@@ -34,9 +38,10 @@ pub enum AnyPoint2 {
 }
 
 /// What the implicit predicates accept where they take a 3D point: every
-/// [`IntoDVec3`] type (an explicit point), [`Lpi`], [`Tpi`], [`AnyPoint3`]
-/// and references to those three. The predicates read a constructed point
-/// where it is; nothing is copied.
+/// [`IntoDVec3`] type (an explicit point, by value), and references to
+/// [`Lpi`], [`Tpi`] and [`AnyPoint3`]. The predicates read a constructed
+/// point where it is: a copy of its inputs into the call would cost more
+/// than the filter.
 pub trait AsAnyPoint3 {
     /// The point as an owned [`AnyPoint3`].
     fn to_any_point3(&self) -> AnyPoint3;
@@ -46,7 +51,8 @@ pub trait AsAnyPoint3 {
 }
 
 /// What the implicit 2D predicates accept where they take a point: every
-/// [`IntoDVec2`] type, [`Ssi`], [`AnyPoint2`] and references to those two.
+/// [`IntoDVec2`] type (by value), and references to [`Ssi`] and
+/// [`AnyPoint2`].
 pub trait AsAnyPoint2 {
     /// The point as an owned [`AnyPoint2`].
     fn to_any_point2(&self) -> AnyPoint2;
@@ -98,16 +104,6 @@ impl<T: IntoDVec2> AsAnyPoint2 for T {
 macro_rules! as_any {
     ($tr:ident, $to:ident, $view:ident, $any:ident, $v:ident, $($ty:ident),*) => {
         $(
-            impl $tr for $ty {
-                #[inline(always)]
-                fn $to(&self) -> $any {
-                    $any::$ty(*self)
-                }
-                #[inline(always)]
-                fn $view(&self) -> $v<'_> {
-                    $v::$ty(self)
-                }
-            }
             impl $tr for &$ty {
                 #[inline(always)]
                 fn $to(&self) -> $any {
@@ -119,16 +115,6 @@ macro_rules! as_any {
                 }
             }
         )*
-        impl $tr for &$any {
-            #[inline(always)]
-            fn $to(&self) -> $any {
-                **self
-            }
-            #[inline(always)]
-            fn $view(&self) -> $v<'_> {
-                (*self).$view()
-            }
-        }
     };
 }
 as_any!(
@@ -142,10 +128,10 @@ as_any!(
 );
 as_any!(AsAnyPoint2, to_any_point2, view2, AnyPoint2, View2, Ssi);
 
-impl AsAnyPoint3 for AnyPoint3 {
+impl AsAnyPoint3 for &AnyPoint3 {
     #[inline(always)]
     fn to_any_point3(&self) -> AnyPoint3 {
-        *self
+        **self
     }
     #[inline(always)]
     fn view3(&self) -> View3<'_> {
@@ -157,10 +143,10 @@ impl AsAnyPoint3 for AnyPoint3 {
     }
 }
 
-impl AsAnyPoint2 for AnyPoint2 {
+impl AsAnyPoint2 for &AnyPoint2 {
     #[inline(always)]
     fn to_any_point2(&self) -> AnyPoint2 {
-        *self
+        **self
     }
     #[inline(always)]
     fn view2(&self) -> View2<'_> {
@@ -305,11 +291,20 @@ impl Point<3> for View3<'_> {
 
     #[inline(always)]
     fn approx(&self, o: [f64; 3]) -> approx::Hom<3> {
-        approx::hom3(self, DVec3::from_array(o))
+        let o = DVec3::from_array(o);
+        match self {
+            View3::Explicit(x) => approx::explicit((*x - o).to_array()),
+            View3::Lpi(x) => approx::lpi(x.p, x.q, &x.cache, o),
+            View3::Tpi(x) => approx::tpi(&x.planes, &x.cache, o),
+        }
     }
 
     fn exact<const K: usize>(&self, o: &[exact::Int<K>; 3], lo: [i32; 3]) -> exact::IntHom<K, 3> {
-        exact::hom3(self, o, lo)
+        match self {
+            View3::Explicit(x) => exact::explicit(x.to_array(), o, lo),
+            View3::Lpi(x) => exact::lpi([x.p, x.q, x.r, x.s, x.t], o, lo),
+            View3::Tpi(x) => exact::tpi(&x.planes, o, lo),
+        }
     }
 }
 
@@ -369,11 +364,18 @@ impl Point<2> for View2<'_> {
 
     #[inline(always)]
     fn approx(&self, o: [f64; 2]) -> approx::Hom<2> {
-        approx::hom2(self, DVec2::from_array(o))
+        let o = DVec2::from_array(o);
+        match self {
+            View2::Explicit(x) => approx::explicit((*x - o).to_array()),
+            View2::Ssi(x) => approx::ssi(x.p, x.q, &x.cache, o),
+        }
     }
 
     fn exact<const K: usize>(&self, o: &[exact::Int<K>; 2], lo: [i32; 2]) -> exact::IntHom<K, 2> {
-        exact::hom2(self, o, lo)
+        match self {
+            View2::Explicit(x) => exact::explicit(x.to_array(), o, lo),
+            View2::Ssi(x) => exact::ssi([x.p, x.q, x.r, x.s], o, lo),
+        }
     }
 }
 

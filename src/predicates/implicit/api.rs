@@ -68,15 +68,18 @@ fn ordering(s: Sign) -> Ordering {
 /// (CGAL's convention), for the exact points the arguments define.
 ///
 /// # Accuracy
-/// Exact for every finite input (see the [module docs](self)). With a
+/// Exact for every finite input (see [constructed points](crate::predicates#constructed-points)). With a
 /// point `j` explicit, the sign of a polynomial whose degree is the sum of
 /// the other three points' (`Lpi` 4, `Tpi` 7, an explicit point 1): 6 for
 /// one `Lpi` beside three explicit points, 9 for one `Tpi` or two `Lpi`s;
 /// with none explicit, one less than the sum of all four. The filter's
-/// bound is derived in `approx.rs` (`det3_bounded`: `6 [E0 R1 R2 + (R0 +
-/// E0) E1 R2 + (R0 + E0)(R1 + E1) E2 + gamma(5) R0 R1 R2]` over the rows'
-/// magnitudes `R` and error bounds `E`, an `Lpi`'s `E = 130 u M^4`). A NaN
-/// or infinite coordinate of an explicit point gives `Zero` (see
+/// bound on the rounded determinant of the rows `x0, x1, x2` (the points
+/// relative to the explicit one) is `6 [E0 R1 R2 + (R0 + E0) E1 R2 + (R0 +
+/// E0)(R1 + E1) E2 + gamma(5) R0 R1 R2]`, over their largest components `R`
+/// and the bounds `E` on those components' errors: `u |x|` for an explicit
+/// point, `130 u M^4` for an `Lpi` and `2960 u M^7` for a `Tpi` (`M` the
+/// largest input difference it is built from). A NaN or infinite
+/// coordinate of an explicit point gives `Zero` (see
 /// [`try_orient3d_implicit`]).
 ///
 /// ```
@@ -87,12 +90,12 @@ fn ordering(s: Sign) -> Ordering {
 /// let x = Lpi::new([0.0; 3], [1.0, 3.0, 7.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]).unwrap();
 /// // The plane 3x = y through 0, (0, 0, 1) and (1, 3, 0) holds that line.
 /// let (a, b, c) = ([0.0; 3], [0.0, 0.0, 1.0], [1.0, 3.0, 0.0]);
-/// assert_eq!(orient3d_implicit(a, b, c, x), Sign::Zero);
+/// assert_eq!(orient3d_implicit(a, b, c, &x), Sign::Zero);
 /// // Rounding the point first gives another answer.
 /// let rounded = [1.0 / 11.0, 3.0 / 11.0, 7.0 / 11.0];
 /// assert_eq!(orient3d(a, b, c, rounded), Sign::Negative);
 /// ```
-#[inline]
+#[inline(always)]
 pub fn orient3d_implicit(
     a: impl AsAnyPoint3,
     b: impl AsAnyPoint3,
@@ -136,7 +139,7 @@ pub fn try_orient3d_implicit(
 /// // Two crossings on the line y = x / 3, neither representable.
 /// let x = Ssi::new([0.0, 0.0], [3.0, 1.0], [1.0, 0.0], [1.0, 1.0]).unwrap();
 /// let y = Ssi::new([0.0, 0.0], [3.0, 1.0], [2.0, 0.0], [2.0, 1.0]).unwrap();
-/// assert_eq!(orient2d_implicit([0.0, 0.0], x, y), Sign::Zero);
+/// assert_eq!(orient2d_implicit([0.0, 0.0], &x, &y), Sign::Zero);
 /// ```
 #[inline]
 pub fn orient2d_implicit(a: impl AsAnyPoint2, b: impl AsAnyPoint2, c: impl AsAnyPoint2) -> Sign {
@@ -177,7 +180,7 @@ pub fn try_orient2d_implicit(
 /// use exactray::Sign;
 /// let x = Lpi::new([0.0, 0.0, -1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 0.3], [1.0, 0.0, 0.3], [0.0, 1.0, 0.3]).unwrap();
 /// // (0, 0, 0.3) seen from above: on the line x = y.
-/// assert_eq!(orient2d_projected([1.0, 1.0, 5.0], [2.0, 2.0, 0.0], x, Axis::Z), Sign::Zero);
+/// assert_eq!(orient2d_projected([1.0, 1.0, 5.0], [2.0, 2.0, 0.0], &x, Axis::Z), Sign::Zero);
 /// ```
 #[inline]
 pub fn orient2d_projected(
@@ -217,8 +220,11 @@ pub fn try_orient2d_projected(
 /// # Accuracy
 /// Exact for every finite input: the sign of `l_x w_y - l_y w_x` (degree
 /// 7 for two `Lpi`s, 13 for two `Tpi`s, 4 for an `Lpi` and an explicit
-/// point), with the bound of `approx.rs`'s `cross_products_bounded`. A NaN
-/// or infinite coordinate of an explicit point gives `Equal`.
+/// point). The filter's bound on the rounded value is
+/// `|l~_x| E_wy + (|w~_y| + E_wy) E_lx + |l~_y| E_wx + (|w~_x| + E_wx) E_ly +
+/// gamma(2) (|l~_x w~_y| + |l~_y w~_x|)`, each `E` bounding a rounded
+/// value's error (as for [`orient3d_implicit`]). A NaN or infinite
+/// coordinate of an explicit point gives `Equal`.
 ///
 /// ```
 /// use exactray::predicates::{Axis, Lpi, cmp_on_axis};
@@ -227,8 +233,8 @@ pub fn try_orient2d_projected(
 /// let seg = ([0.0; 3], [3.0; 3]);
 /// let at_x = Lpi::new(seg.0, seg.1, [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [1.0, 0.0, 1.0]).unwrap();
 /// let at_y = Lpi::new(seg.0, seg.1, [0.0, 1.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 1.0]).unwrap();
-/// assert_eq!(cmp_on_axis(at_x, at_y, Axis::Z), Ordering::Equal);
-/// assert_eq!(cmp_on_axis(at_x, [0.0, 0.0, 1.5], Axis::Z), Ordering::Less);
+/// assert_eq!(cmp_on_axis(&at_x, &at_y, Axis::Z), Ordering::Equal);
+/// assert_eq!(cmp_on_axis(&at_x, [0.0, 0.0, 1.5], Axis::Z), Ordering::Less);
 /// ```
 #[inline]
 pub fn cmp_on_axis(x: impl AsAnyPoint3, y: impl AsAnyPoint3, axis: Axis) -> Ordering {
@@ -262,8 +268,8 @@ pub fn try_cmp_on_axis(
 /// use exactray::predicates::{Axis, Lpi, less_on_axis};
 /// let x = Lpi::new([0.0; 3], [3.0; 3], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [1.0, 0.0, 1.0]).unwrap();
 /// // x is (1, 1, 1).
-/// assert!(less_on_axis(x, [1.0, 2.0, 0.0], Axis::Y));
-/// assert!(!less_on_axis(x, [1.0, 2.0, 0.0], Axis::X));
+/// assert!(less_on_axis(&x, [1.0, 2.0, 0.0], Axis::Y));
+/// assert!(!less_on_axis(&x, [1.0, 2.0, 0.0], Axis::X));
 /// ```
 #[inline]
 pub fn less_on_axis(x: impl AsAnyPoint3, y: impl AsAnyPoint3, axis: Axis) -> bool {
@@ -305,8 +311,8 @@ pub fn try_less_on_axis(
 /// let a = Lpi::new(p, q, r, s, t).unwrap();
 /// let [r, s, t] = plane(1.0 + f64::EPSILON);
 /// let b = Lpi::new(p, q, r, s, t).unwrap();
-/// assert_eq!(cmp_along_line(p, q, a, b), Ordering::Less);
-/// assert_eq!(cmp_along_line(q, p, a, b), Ordering::Greater);
+/// assert_eq!(cmp_along_line(p, q, &a, &b), Ordering::Less);
+/// assert_eq!(cmp_along_line(q, p, &a, &b), Ordering::Greater);
 /// ```
 #[inline]
 pub fn cmp_along_line(
@@ -360,7 +366,7 @@ pub fn try_cmp_along_line(
 /// use exactray::predicates::{Axis2, Ssi, cmp_on_axis_2d};
 /// use core::cmp::Ordering;
 /// let x = Ssi::new([0.0, 0.0], [3.0, 1.0], [1.0, 0.0], [1.0, 1.0]).unwrap(); // (1, 1/3)
-/// assert_eq!(cmp_on_axis_2d(x, [0.0, 1.0 / 3.0], Axis2::Y), Ordering::Greater);
+/// assert_eq!(cmp_on_axis_2d(&x, [0.0, 1.0 / 3.0], Axis2::Y), Ordering::Greater);
 /// ```
 #[inline]
 pub fn cmp_on_axis_2d(x: impl AsAnyPoint2, y: impl AsAnyPoint2, axis: Axis2) -> Ordering {
@@ -398,7 +404,7 @@ pub fn try_cmp_on_axis_2d(
 /// let (p, q) = ([0.0, 0.0], [3.0, 1.0]);
 /// let a = Ssi::new(p, q, [1.0, 0.0], [1.0, 1.0]).unwrap();
 /// let b = Ssi::new(p, q, [2.0, 0.0], [2.0, 1.0]).unwrap();
-/// assert_eq!(cmp_along_line_2d(p, q, a, b), Ordering::Less);
+/// assert_eq!(cmp_along_line_2d(p, q, &a, &b), Ordering::Less);
 /// ```
 #[inline]
 pub fn cmp_along_line_2d(

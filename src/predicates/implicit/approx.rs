@@ -21,14 +21,12 @@
 //! 2^R]` with `R = 800 / degree`, `degree` that of the predicate's whole
 //! polynomial. Then every product of the computation (at most `degree`
 //! factors, each bounded by a power of some `M`) lies below `2^820` with
-//! its constants, and an underflowing product, off by `2^-1075 <= 2^(-1022
-//! + 800) u m_x m_y`, is within `2^-222` of the rounding term the bound
-//! already carries for it. Out of range, the predicates scale every input
+//! its constants, and an underflowing product, off by `2^-1075`, at most
+//! `2^(800 - 1022) u m_x m_y`, is within `2^-222` of the rounding term the
+//! bound already carries for it. Out of range, the predicates scale every input
 //! by one power of two (which leaves every sign unchanged) and try again,
 //! and only then go exact.
 
-use super::any::{View2, View3};
-use super::points::{Lpi, Ssi, Tpi};
 use crate::arith::exponent::{pow2, unit_scale};
 use crate::arith::magnitude::larger;
 use crate::arith::roundoff::U;
@@ -78,11 +76,18 @@ pub(super) const SSI_L: f64 = 29.0 * U;
 /// 48 M^6`).
 pub(super) const TPI_W: f64 = 808.0 * U;
 
-/// `Tpi`'s coordinates `l = h_u c_u + h_v c_v + h_w c_w`, `h_i = n_i . (i0
-/// - o)` off by `46 u M^3` (`m = 6 M^3`, as `Lpi`'s `D`): each product `h_i
-/// c_i,k` by `6 M^3 80 u M^4 + 8 M^4 46 u M^3 + 48 u M^7 = 896 u M^7`;
+/// `Tpi`'s coordinates `l = h_u c_u + h_v c_v + h_w c_w`, with
+/// `h_i = n_i . (i0 - o)` off by `46 u M^3` (`m = 6 M^3`, as `Lpi`'s `D`):
+/// each product `h_i c_i,k` by `6 M^3 80 u M^4 + 8 M^4 46 u M^3 + 48 u M^7 = 896 u M^7`;
 /// summed: `1888`, then `2928 u M^7` (`m = 144 M^7`).
 pub(super) const TPI_L: f64 = 2960.0 * U;
+
+/// `1 + 2^-10`: the margin on the a-priori magnitudes `m` of the point
+/// constants above (`|l| <= 12 M^4` for an `Lpi`, `144 M^7` for a `Tpi`,
+/// `4 M^3` for an `Ssi`, to first order), which covers their `O(u)`
+/// corrections, the errors `el` (below `3000 u` of them) and the roundings
+/// of `lmax` itself.
+const MARGIN: f64 = 1.0 + pow2(-10);
 
 /// The largest magnitude of a vector's components.
 #[inline(always)]
@@ -110,6 +115,10 @@ pub(super) struct Hom<const D: usize> {
     pub(super) ew: f64,
     pub(super) scale: f64,
     pub(super) least: f64,
+    /// An upper bound on `|l~|` (largest component) from the scale: the
+    /// first-order magnitude `m` of the point constants above, times
+    /// `1 + 2^-10`, which covers their error terms and the rounding.
+    pub(super) lmax: f64,
     pub(super) explicit: bool,
 }
 
@@ -125,6 +134,7 @@ impl<const D: usize> Hom<D> {
             ew: self.ew,
             scale: self.scale,
             least: self.least,
+            lmax: self.lmax,
             explicit: self.explicit,
         }
     }
@@ -141,30 +151,12 @@ pub(super) fn explicit<const D: usize>(l: [f64; D]) -> Hom<D> {
         ew: 0.0,
         scale: r,
         least: r,
+        lmax: r,
         explicit: true,
     }
 }
 
-/// A point relative to `o`, rounded, with its bounds.
-#[inline(always)]
-pub(super) fn hom3(p: &View3<'_>, o: DVec3) -> Hom<3> {
-    match p {
-        View3::Explicit(x) => explicit((*x - o).to_array()),
-        View3::Lpi(x) => lpi(x, o),
-        View3::Tpi(x) => tpi(x, o),
-    }
-}
-
-/// A point relative to `o`, rounded, with its bounds.
-#[inline(always)]
-pub(super) fn hom2(p: &View2<'_>, o: DVec2) -> Hom<2> {
-    match p {
-        View2::Explicit(x) => explicit((*x - o).to_array()),
-        View2::Ssi(x) => ssi(x, o),
-    }
-}
-
-/// The part of an [`Lpi`]'s filter that does not depend on the origin,
+/// The part of an `Lpi`'s filter that does not depend on the origin,
 /// computed once at construction: `n = (s - r) x (t - r)`, `D = n . (q -
 /// p)` and `P = n . (p - r)` rounded, and the scale `M` of the rounded
 /// differences `s - r`, `t - r`, `q - p`, `p - r`.
@@ -203,12 +195,12 @@ fn weight_in_range(m: f64, degree: i32) -> bool {
     (pow2(-800 / degree)..=pow2(800 / degree)).contains(&m)
 }
 
-/// An [`Lpi`] relative to `o`: `h = p - o` and `l = h D - e P`, with `M`
-/// raised to cover `h` (every bound above holds with the larger `M`).
+/// An `Lpi` (its line `p`, `q` and its cache) relative to `o`: `h = p - o`
+/// and `l = h D - e P`, with `M` raised to cover `h` (every bound above
+/// holds with the larger `M`).
 #[inline(always)]
-fn lpi(x: &Lpi, o: DVec3) -> Hom<3> {
-    let c = &x.cache;
-    let (e, h) = (x.q - x.p, x.p - o);
+pub(super) fn lpi(p: DVec3, q: DVec3, c: &LpiCache, o: DVec3) -> Hom<3> {
+    let (e, h) = (q - p, p - o);
     let m = larger(c.m, norm3(h));
     let m2 = m * m;
     Hom {
@@ -218,11 +210,12 @@ fn lpi(x: &Lpi, o: DVec3) -> Hom<3> {
         ew: LPI_W * (c.m * c.m * c.m),
         scale: m,
         least: c.m,
+        lmax: (12.0 * MARGIN) * (m2 * m2),
         explicit: false,
     }
 }
 
-/// The part of a [`Tpi`]'s filter that does not depend on the origin: the
+/// The part of a `Tpi`'s filter that does not depend on the origin: the
 /// rounded normals `n_i`, their cross products `c_u = n_v x n_w`, ..., the
 /// weight `W = n_u . c_u`, and the scale `M` of the planes' differences
 /// `i1 - i0`, `i2 - i0`.
@@ -261,14 +254,13 @@ impl TpiCache {
     }
 }
 
-/// A [`Tpi`] relative to `o`: `h_i = n_i . (i0 - o)` and `l = sum h_i c_i`,
-/// `M` raised to cover the `i0 - o`.
+/// A `Tpi` (its planes and its cache) relative to `o`: `h_i = n_i . (i0 -
+/// o)` and `l = sum h_i c_i`, `M` raised to cover the `i0 - o`.
 #[inline(always)]
-fn tpi(x: &Tpi, o: DVec3) -> Hom<3> {
-    let c = &x.cache;
+pub(super) fn tpi(planes: &[[DVec3; 3]; 3], c: &TpiCache, o: DVec3) -> Hom<3> {
     let mut m = c.m;
     let h: [f64; 3] = core::array::from_fn(|i| {
-        let g = x.planes[i][0] - o;
+        let g = planes[i][0] - o;
         m = larger(m, norm3(g));
         c.n[i].dot(g)
     });
@@ -282,11 +274,12 @@ fn tpi(x: &Tpi, o: DVec3) -> Hom<3> {
         ew: TPI_W * (w2 * w2 * w2),
         scale: m,
         least: c.m,
+        lmax: (144.0 * MARGIN) * (m6 * m),
         explicit: false,
     }
 }
 
-/// The part of an [`Ssi`]'s filter that does not depend on the origin:
+/// The part of an `Ssi`'s filter that does not depend on the origin:
 /// `D = e x f`, `T = (r - p) x f` rounded, and the scale `M` of `e = q -
 /// p`, `f = s - r`, `r - p`.
 #[derive(Clone, Copy, Debug)]
@@ -315,11 +308,11 @@ impl SsiCache {
     }
 }
 
-/// An [`Ssi`] relative to `o`: `l = h D + e T`, `h = p - o`.
+/// An `Ssi` (its first line `p`, `q` and its cache) relative to `o`: `l =
+/// h D + e T`, `h = p - o`.
 #[inline(always)]
-fn ssi(x: &Ssi, o: DVec2) -> Hom<2> {
-    let c = &x.cache;
-    let (e, h) = (x.q - x.p, x.p - o);
+pub(super) fn ssi(p: DVec2, q: DVec2, c: &SsiCache, o: DVec2) -> Hom<2> {
+    let (e, h) = (q - p, p - o);
     let m = larger(c.m, norm2(h));
     Hom {
         l: (h * c.d + e * c.t).to_array(),
@@ -328,6 +321,7 @@ fn ssi(x: &Ssi, o: DVec2) -> Hom<2> {
         ew: SSI_W * (c.m * c.m),
         scale: m,
         least: c.m,
+        lmax: (4.0 * MARGIN) * (m * m * m),
         explicit: false,
     }
 }

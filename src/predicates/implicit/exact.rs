@@ -13,7 +13,7 @@
 //! an integer, and the sign of the polynomial on those integers is the
 //! sign of the polynomial on the inputs. The order along a line is the one
 //! predicate this does not hold for (a dot product mixes the axes); it
-//! takes one grain for all axes ([`grid`] with `common`).
+//! takes one grain for all axes (`GridBuilder::build` with `common`).
 //!
 //! # Widths
 //! A difference of two coordinates is below `2^S` (`S` the grid's
@@ -25,8 +25,6 @@
 //! 48` bits for the predicate's degree `d`: the points' own values (degree
 //! 7 at most) in `K` limbs, the predicate's in `N`.
 
-use super::any::{AnyPoint2, AnyPoint3, Point, View2, View3};
-use super::points::{Lpi, Tpi};
 use crate::arith::exponent::split;
 use crate::arith::fixed_int::FixedInt;
 use crate::sign::Sign;
@@ -41,13 +39,13 @@ pub(super) struct Grid<const D: usize> {
 }
 
 /// Collects the finest and coarsest bits of every axis.
-struct GridBuilder<const D: usize> {
+pub(super) struct GridBuilder<const D: usize> {
     lo: [i32; D],
     hi: [i32; D],
 }
 
 impl<const D: usize> GridBuilder<D> {
-    fn new() -> Self {
+    pub(super) fn new() -> Self {
         GridBuilder {
             lo: [i32::MAX; D],
             hi: [i32::MIN; D],
@@ -55,7 +53,7 @@ impl<const D: usize> GridBuilder<D> {
     }
 
     /// Takes one input point (finite).
-    fn add(&mut self, v: [f64; D]) {
+    pub(super) fn add(&mut self, v: [f64; D]) {
         for (k, x) in v.into_iter().enumerate() {
             let (m, e) = split(x);
             if m != 0 {
@@ -67,7 +65,7 @@ impl<const D: usize> GridBuilder<D> {
     }
 
     /// The grid: per axis, or with `common` one grain for all axes.
-    fn build(self, common: bool) -> Grid<D> {
+    pub(super) fn build(self, common: bool) -> Grid<D> {
         let (mut lo, mut hi) = (self.lo, self.hi);
         if common {
             let l = lo.iter().copied().min().unwrap_or(i32::MAX);
@@ -88,16 +86,6 @@ impl<const D: usize> GridBuilder<D> {
             bits: span as u32 + 1,
         }
     }
-}
-
-/// The grid of a set of points' inputs: per axis, or with `common` one
-/// grain for all axes.
-pub(super) fn grid<P: Point<D>, const D: usize>(points: &[P], common: bool) -> Grid<D> {
-    let mut g = GridBuilder::new();
-    for p in points {
-        p.for_each_input(|v| g.add(v));
-    }
-    g.build(common)
 }
 
 /// An exact evaluation, run at the width its degree needs.
@@ -182,28 +170,34 @@ fn combine<const K: usize, const D: usize>(
     core::array::from_fn(|k| mul(&a[k], s).sub(&mul(&b[k], t)))
 }
 
-/// A 3D point relative to the origin `o` (integers on the grid `lo`).
-/// Each construction is its own function (and a plane at a time), so that
-/// their integers are never on the stack together.
-pub(super) fn hom3<const K: usize>(p: &View3<'_>, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
-    match p {
-        View3::Explicit(x) => IntHom {
-            l: sub(&ints(x.to_array(), lo), o),
-            w: Int::from_i64(1),
-        },
-        View3::Lpi(x) => lpi(x, o, lo),
-        View3::Tpi(x) => tpi(x, o, lo),
+/// An explicit point relative to the origin `o` (integers on the grid
+/// `lo`): `x - o` over the weight 1.
+pub(super) fn explicit<const K: usize, const D: usize>(
+    x: [f64; D],
+    o: &[Int<K>; D],
+    lo: [i32; D],
+) -> IntHom<K, D> {
+    IntHom {
+        l: sub(&ints(x, lo), o),
+        w: Int::from_i64(1),
     }
 }
 
+/// An `Lpi` (its inputs `p, q, r, s, t`) relative to the origin `o`. Each
+/// construction is its own function (and a `Tpi` a plane at a time), so
+/// that their integers are never on the stack together.
 #[inline(never)]
-fn lpi<const K: usize>(x: &Lpi, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
-    let n = cross(&difference(x.s, x.r, lo), &difference(x.t, x.r, lo));
-    let e = difference(x.q, x.p, lo);
+pub(super) fn lpi<const K: usize>(
+    [p, q, r, s, t]: [DVec3; 5],
+    o: &[Int<K>; 3],
+    lo: [i32; 3],
+) -> IntHom<K, 3> {
+    let n = cross(&difference(s, r, lo), &difference(t, r, lo));
+    let e = difference(q, p, lo);
     let d = dot(&n, &e);
-    let pp = dot(&n, &difference(x.p, x.r, lo));
+    let pp = dot(&n, &difference(p, r, lo));
     IntHom {
-        l: combine(&sub(&ints(x.p.to_array(), lo), o), &d, &e, &pp),
+        l: combine(&sub(&ints(p.to_array(), lo), o), &d, &e, &pp),
         w: d,
     }
 }
@@ -214,11 +208,16 @@ fn difference<const K: usize>(a: DVec3, b: DVec3, lo: [i32; 3]) -> [Int<K>; 3] {
     sub(&ints(a.to_array(), lo), &ints(b.to_array(), lo))
 }
 
+/// A `Tpi` (its planes) relative to the origin `o`.
 #[inline(never)]
-fn tpi<const K: usize>(x: &Tpi, o: &[Int<K>; 3], lo: [i32; 3]) -> IntHom<K, 3> {
+pub(super) fn tpi<const K: usize>(
+    planes: &[[DVec3; 3]; 3],
+    o: &[Int<K>; 3],
+    lo: [i32; 3],
+) -> IntHom<K, 3> {
     let mut n = [[Int::ZERO; 3]; 3];
     let mut h = [Int::ZERO; 3];
-    for (i, plane) in x.planes.iter().enumerate() {
+    for (i, plane) in planes.iter().enumerate() {
         (n[i], h[i]) = plane_normal(plane, o, lo);
     }
     let c = [
@@ -251,25 +250,21 @@ fn plane_normal<const K: usize>(
     (n, h)
 }
 
-/// A 2D point relative to the origin `o` (integers on the grid `lo`).
-pub(super) fn hom2<const K: usize>(p: &View2<'_>, o: &[Int<K>; 2], lo: [i32; 2]) -> IntHom<K, 2> {
+/// An `Ssi` (its inputs `p, q, r, s`) relative to the origin `o`.
+pub(super) fn ssi<const K: usize>(
+    [p, q, r, s]: [DVec2; 4],
+    o: &[Int<K>; 2],
+    lo: [i32; 2],
+) -> IntHom<K, 2> {
     let int = |v: DVec2| ints::<K, 2>(v.to_array(), lo);
-    match p {
-        View2::Explicit(x) => IntHom {
-            l: sub(&int(*x), o),
-            w: Int::from_i64(1),
-        },
-        View2::Ssi(x) => {
-            let [p, q, r, s] = [x.p, x.q, x.r, x.s].map(int);
-            let (e, f) = (sub(&q, &p), sub(&s, &r));
-            let d = perp(&e, &f);
-            let t = perp(&sub(&r, &p), &f);
-            // D (p - o) + T e = D (p - o) - (-T) e.
-            IntHom {
-                l: combine(&sub(&p, o), &d, &e, &t.neg()),
-                w: d,
-            }
-        }
+    let [p, q, r, s] = [p, q, r, s].map(int);
+    let (e, f) = (sub(&q, &p), sub(&s, &r));
+    let d = perp(&e, &f);
+    let t = perp(&sub(&r, &p), &f);
+    // D (p - o) + T e = D (p - o) - (-T) e.
+    IntHom {
+        l: combine(&sub(&p, o), &d, &e, &t.neg()),
+        w: d,
     }
 }
 
@@ -283,24 +278,6 @@ pub(super) fn mul<const N: usize, const A: usize, const B: usize>(
     b: &Int<B>,
 ) -> Int<N> {
     Int::<N>::mul(a, b)
-}
-
-/// Every point relative to the origin `o`, one at a time (each point's
-/// integers are built in their own frame, then copied in).
-#[inline(never)]
-pub(super) fn homs<P: Point<D>, const K: usize, const D: usize, const L: usize>(
-    p: &[P],
-    o: &[Int<K>; D],
-    lo: [i32; D],
-) -> [IntHom<K, D>; L] {
-    let mut h = [IntHom {
-        l: [Int::ZERO; D],
-        w: Int::ZERO,
-    }; L];
-    for (h, p) in h.iter_mut().zip(p) {
-        *h = p.exact(o, lo);
-    }
-    h
 }
 
 /// `det[x0, x1, x2] = x0 . (x1 x x2)` of integer rows.
@@ -320,9 +297,16 @@ pub(super) fn det2<const K: usize, const N: usize>(rows: [&[Int<K>; 2]; 2]) -> I
     mul::<N, K, K>(&x[0], &y[1]).sub(&mul(&x[1], &y[0]))
 }
 
-/// The exact sign of a [`Tpi`]'s weight.
-pub(super) fn tpi_weight_sign(x: &Tpi) -> Sign {
-    struct Weight<'a>(&'a Tpi, Grid<3>);
+/// The grid of a set of input points.
+fn grid_of<const D: usize>(points: &[[f64; D]]) -> Grid<D> {
+    let mut g = GridBuilder::new();
+    points.iter().for_each(|&v| g.add(v));
+    g.build(false)
+}
+
+/// The exact sign of a `Tpi`'s weight (of its planes).
+pub(super) fn tpi_weight_sign(planes: &[[DVec3; 3]; 3]) -> Sign {
+    struct Weight<'a>(&'a [[DVec3; 3]; 3], Grid<3>);
     impl Exact for Weight<'_> {
         fn degree(&self) -> u32 {
             6
@@ -333,22 +317,20 @@ pub(super) fn tpi_weight_sign(x: &Tpi) -> Sign {
         #[inline(never)]
         fn eval<const K: usize, const N: usize>(&self) -> Sign {
             let o = [Int::ZERO; 3];
-            let n = self
-                .0
-                .planes
-                .map(|p| plane_normal::<K>(&p, &o, self.1.lo).0);
+            let n = self.0.map(|p| plane_normal::<K>(&p, &o, self.1.lo).0);
             det3::<K, N>([&n[0], &n[1], &n[2]]).sign()
         }
     }
-    let grid = grid(&[AnyPoint3::Tpi(*x)], false);
-    run(&Weight(x, grid))
+    let points: [[f64; 3]; 9] = core::array::from_fn(|i| planes[i / 3][i % 3].to_array());
+    let grid = grid_of(&points);
+    run(&Weight(planes, grid))
 }
 
 /// The exact sign of `det[a0 - b0, a1 - b1, a2 - b2]` (the weight of an
 /// `Lpi`), where the sparse terms did not fit.
 pub(super) fn det3_of_differences(rows: [(DVec3, DVec3); 3]) -> Sign {
-    let explicit = rows.map(|(a, b)| [AnyPoint3::Explicit(a), AnyPoint3::Explicit(b)]);
-    let grid = grid(explicit.as_flattened(), false);
+    let points = rows.map(|(a, b)| [a.to_array(), b.to_array()]);
+    let grid = grid_of(points.as_flattened());
     let int = |v: DVec3| ints::<34, 3>(v.to_array(), grid.lo);
     let d = rows.map(|(a, b)| sub(&int(a), &int(b)));
     det3::<34, 100>([&d[0], &d[1], &d[2]]).sign()
@@ -357,8 +339,7 @@ pub(super) fn det3_of_differences(rows: [(DVec3, DVec3); 3]) -> Sign {
 /// The exact sign of `(a0 - b0) x (a1 - b1)` (the weight of an `Ssi`),
 /// where the sparse terms did not fit.
 pub(super) fn cross_of_differences(e: (DVec2, DVec2), f: (DVec2, DVec2)) -> Sign {
-    let explicit = [e.0, e.1, f.0, f.1].map(AnyPoint2::Explicit);
-    let grid = grid(&explicit, false);
+    let grid = grid_of(&[e.0, e.1, f.0, f.1].map(|v| v.to_array()));
     let int = |v: DVec2| ints::<34, 2>(v.to_array(), grid.lo);
     let (x, y) = (sub(&int(e.0), &int(e.1)), sub(&int(f.0), &int(f.1)));
     det2::<34, 67>([&x, &y]).sign()

@@ -5,8 +5,8 @@
 //!
 //! A constructed point is its input points. Its construction decides
 //! exactly that they define one point, and keeps the exact sign of its
-//! weight. Relative to an origin `o` its homogeneous coordinates `l = w (X
-//! - o)` and its weight `w` are polynomials in the input coordinates: of
+//! weight. Relative to an origin `o` its homogeneous coordinates
+//! `l = w (X - o)` and its weight `w` are polynomials in the input coordinates: of
 //! degrees 4 and 3 for an `Lpi`, 7 and 6 for a `Tpi`, 3 and 2 for an `Ssi`
 //! (an explicit point: `x - o`, degree 1, over the weight 1). Each
 //! predicate is the sign of a polynomial in those (its degree stated with
@@ -118,6 +118,35 @@ fn declined<Q: Predicate<D, K>, P: Point<D>, const D: usize, const K: usize>(
         }
     }
     q.exact(&p)
+}
+
+/// The grid of a set of points' inputs (`exact`): per axis, or with
+/// `common` one grain for all axes.
+fn grid<P: Point<D>, const D: usize>(points: &[P], common: bool) -> exact::Grid<D> {
+    let mut g = exact::GridBuilder::new();
+    for p in points {
+        p.for_each_input(|v| g.add(v));
+    }
+    g.build(common)
+}
+
+/// Every point's exact homogeneous coordinates relative to the origin `o`,
+/// one at a time (each point's integers are built in their own frame, then
+/// copied in).
+#[inline(never)]
+fn homs<P: Point<D>, const K: usize, const D: usize, const L: usize>(
+    p: &[P],
+    o: &[exact::Int<K>; D],
+    lo: [i32; D],
+) -> [exact::IntHom<K, D>; L] {
+    let mut h = [exact::IntHom {
+        l: [exact::Int::ZERO; D],
+        w: exact::Int::ZERO,
+    }; L];
+    for (h, p) in h.iter_mut().zip(p) {
+        *h = p.exact(o, lo);
+    }
+    h
 }
 
 /// The largest scale of a filter's points.

@@ -66,7 +66,7 @@ impl<const D: usize> Predicate<D, 2> for OnAxis {
         let (origin, _) = pivot(p);
         exact::run(&AxisExact {
             p: *p,
-            grid: exact::grid(p, false),
+            grid: super::grid(p, false),
             origin,
             axis: self.0,
         })
@@ -93,7 +93,7 @@ impl<P: Point<D>, const D: usize> Exact for AxisExact<P, D> {
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let lo = self.grid.lo;
         let o = exact::ints::<K, D>(self.origin, lo);
-        let [x, y]: [IntHom<K, D>; 2] = exact::homs(&self.p, &o, lo);
+        let [x, y]: [IntHom<K, D>; 2] = super::homs(&self.p, &o, lo);
         let k = self.axis;
         let v = exact::mul::<N, _, _>(&x.l[k], &y.w).sub(&exact::mul(&y.l[k], &x.w));
         with_weights(v.sign(), &self.p)
@@ -145,7 +145,7 @@ impl<const D: usize> Predicate<D, 4> for Along {
     fn exact<P: Point<D>>(&self, p: &[P; 4]) -> Sign {
         exact::run(&AlongExact {
             p: *p,
-            grid: exact::grid(p, true),
+            grid: super::grid(p, true),
         })
     }
 }
@@ -168,7 +168,7 @@ impl<P: Point<D>, const D: usize> Exact for AlongExact<P, D> {
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let lo = self.grid.lo;
         let o = exact::ints::<K, D>(self.p[0].anchor(), lo);
-        let h: [IntHom<K, D>; 3] = exact::homs(&self.p[1..], &o, lo);
+        let h: [IntHom<K, D>; 3] = super::homs(&self.p[1..], &o, lo);
         let [d, x, y] = &h;
         let mut v = Int::<N>::ZERO;
         for k in 0..D {

@@ -80,18 +80,19 @@ fn single_implicit3(p: &[View3<'_>; 4]) -> Option<(usize, [DVec3; 3])> {
 /// and `X`'s `l`. With `e_u = eps |u|`, `e_v = eps |v|` (`eps` the explicit
 /// rows' bound, `u (1 + 2^-50)`), `det3_bounded`'s bound is `6 |u| |v|
 /// [(2 eps + eps^2 + 5 u) |l| + (1 + eps)^2 E_l]`, below `6 |u| |v| (7 u
-/// |l| + E_l) (1 + 2^-48)`: `SAFETY` covers the factor.
+/// |l| + E_l) (1 + 2^-48)`: `SAFETY` covers the factor, and `|l|` is at
+/// most `X`'s a-priori `lmax`.
 #[inline(always)]
 fn one_implicit3(a: DVec3, b: DVec3, c: DVec3, x: &View3<'_>) -> Option<Sign> {
     let h = x.approx(a.to_array());
     let (u, v, l) = (b - a, c - a, DVec3::from(h.l));
-    let (ru, rv, rl) = (approx::norm3(u), approx::norm3(v), approx::norm3(l));
+    let (ru, rv) = (approx::norm3(u), approx::norm3(v));
     // Zero rows fail the range too: the ladder takes them.
     let least = smaller(h.least, smaller(ru, rv));
     if !approx::scales_in_range(least, larger(h.scale, larger(ru, rv)), 2 + x.degrees().l) {
         return None;
     }
-    let bound = 6.0 * (ru * rv) * (7.0 * U * rl + h.el) * SAFETY;
+    let bound = 6.0 * (ru * rv) * (7.0 * U * h.lmax + h.el) * SAFETY;
     certified(u.dot(v.cross(l)), bound).map(|s| s.product(x.weight_sign()))
 }
 
@@ -120,18 +121,18 @@ pub(super) fn orient2d(p: [View2<'_>; 3]) -> Sign {
 /// The filter for `orient2d(a, b, X)`, `X` constructed, straight-line:
 /// [`Planar`]'s with `a` the origin, the rows `u = b - a` and `X`'s `l`:
 /// `det2_bounded`'s bound `2 [eps |u| |l| + (1 + eps) |u| E_l + 2 u |u|
-/// |l|]` is below `2 |u| (3 u |l| + E_l) (1 + 2^-48)` (as for
-/// [`one_implicit3`]).
+/// |l|]` is below `2 |u| (3 u |l| + E_l) (1 + 2^-48)`, `|l|` at most
+/// `lmax` (as for [`one_implicit3`]).
 #[inline(always)]
 fn one_implicit2(a: DVec2, b: DVec2, x: &View2<'_>) -> Option<Sign> {
     let h = x.approx(a.to_array());
     let (u, l) = (b - a, DVec2::from(h.l));
-    let (ru, rl) = (approx::norm2(u), approx::norm2(l));
+    let ru = approx::norm2(u);
     // A zero row fails the range too: the ladder takes it.
     if !approx::scales_in_range(smaller(h.least, ru), larger(h.scale, ru), 1 + x.degrees().l) {
         return None;
     }
-    let bound = 2.0 * ru * (3.0 * U * rl + h.el) * SAFETY;
+    let bound = 2.0 * ru * (3.0 * U * h.lmax + h.el) * SAFETY;
     certified(u.perp_dot(l), bound).map(|s| s.product(x.weight_sign()))
 }
 
@@ -176,7 +177,7 @@ impl Predicate<3, 4> for Orient3 {
         let (origin, pivot) = pivot(p);
         exact::run(&Orient3Exact {
             p: *p,
-            grid: exact::grid(p, false),
+            grid: super::grid(p, false),
             origin,
             pivot,
         })
@@ -224,7 +225,7 @@ impl<P: Point<3>> Exact for Orient3Exact<P> {
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let lo = self.grid.lo;
         let o = exact::ints::<K, 3>(self.origin, lo);
-        let h: [IntHom<K, 3>; 4] = exact::homs(&self.p, &o, lo);
+        let h: [IntHom<K, 3>; 4] = super::homs(&self.p, &o, lo);
         let rows = |i: usize| others::<3>(i).map(|k| &h[k].l);
         let s = match self.pivot {
             Some(j) => alternate(exact::det3::<K, N>(rows(j)).sign(), j),
@@ -293,7 +294,7 @@ impl<const D: usize> Predicate<D, 3> for Planar {
         let (origin, pivot) = pivot(p);
         exact::run(&PlanarExact {
             p: *p,
-            grid: exact::grid(p, false),
+            grid: super::grid(p, false),
             origin,
             pivot,
             axes: self.axes(),
@@ -322,7 +323,7 @@ impl<P: Point<D>, const D: usize> Exact for PlanarExact<P, D> {
     #[inline(never)]
     fn eval<const K: usize, const N: usize>(&self) -> Sign {
         let o = exact::ints::<K, D>(self.origin, self.grid.lo);
-        let full: [IntHom<K, D>; 3] = exact::homs(&self.p, &o, self.grid.lo);
+        let full: [IntHom<K, D>; 3] = super::homs(&self.p, &o, self.grid.lo);
         let h = full.map(|h| IntHom {
             l: [h.l[self.axes[0]], h.l[self.axes[1]]],
             w: h.w,

@@ -183,7 +183,7 @@ impl Tpi {
         x.w = x
             .cache
             .weight_sign()
-            .unwrap_or_else(|| exact::tpi_weight_sign(&x));
+            .unwrap_or_else(|| exact::tpi_weight_sign(&x.planes));
         if x.w == Sign::Zero {
             return Err(InputError::NoUniqueIntersection {
                 construction: "Tpi",
