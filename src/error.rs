@@ -53,6 +53,16 @@ pub enum InputError {
         /// The largest number of items accepted.
         max: usize,
     },
+    /// A constructed point that is not one point: the line and the plane
+    /// of an [`Lpi`](crate::predicates::Lpi) are parallel (or the line's
+    /// two points coincide, or the plane's three are collinear), the three
+    /// planes of a [`Tpi`](crate::predicates::Tpi) do not meet in exactly
+    /// one point, or the two lines of an [`Ssi`](crate::predicates::Ssi)
+    /// are parallel. Decided exactly.
+    NoUniqueIntersection {
+        /// The construction: `"Lpi"`, `"Tpi"` or `"Ssi"`.
+        construction: &'static str,
+    },
     /// An index into a slice (a mesh triangle's vertex index) is not below
     /// the slice's length.
     IndexOutOfRange {
@@ -99,6 +109,10 @@ impl fmt::Display for InputError {
                 write!(f, "slice lengths differ: {expected} and {got}")
             }
             InputError::TooManyItems { max } => write!(f, "more than {max} items"),
+            InputError::NoUniqueIntersection { construction } => write!(
+                f,
+                "the lines or planes of the {construction} do not meet in exactly one point"
+            ),
             InputError::IndexOutOfRange { index, len } => {
                 write!(f, "index {index} out of range for length {len}")
             }

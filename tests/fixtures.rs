@@ -29,6 +29,7 @@ use exactray::query::ray::{Exact, Ray};
 use exactray::roots::Roots;
 use exactray::scene::TriangleMesh;
 use exactray::shape::{Cone, Cylinder, Quadric, Sphere, Triangle};
+use exactray_oracle::implicit_oracle::{self, Pt2, Pt3};
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
@@ -222,6 +223,34 @@ const KINDS: &[Kind] = &[
         scaling: Scaling::Coordinates { from: 0, count: 15 },
     },
     Kind {
+        name: "orient3d_lpi",
+        min_fields: 25,
+        predicate: Some(PerLine(crate_orient3d_lpi)),
+        oracle: Some(PerLine(oracle_orient3d_lpi)),
+        scaling: Scaling::Coordinates { from: 0, count: 24 },
+    },
+    Kind {
+        name: "orient3d_tpi",
+        min_fields: 37,
+        predicate: Some(PerLine(crate_orient3d_tpi)),
+        oracle: Some(PerLine(oracle_orient3d_tpi)),
+        scaling: Scaling::Coordinates { from: 0, count: 36 },
+    },
+    Kind {
+        name: "orient2d_ssi",
+        min_fields: 13,
+        predicate: Some(PerLine(crate_orient2d_ssi)),
+        oracle: Some(PerLine(oracle_orient2d_ssi)),
+        scaling: Scaling::Coordinates { from: 0, count: 12 },
+    },
+    Kind {
+        name: "less_on_axis_lpi",
+        min_fields: 32,
+        predicate: Some(PerLine(crate_less_on_axis_lpi)),
+        oracle: Some(PerLine(oracle_less_on_axis_lpi)),
+        scaling: Scaling::Coordinates { from: 1, count: 30 },
+    },
+    Kind {
         name: "ray_sphere",
         min_fields: 11,
         predicate: Some(PerLine(crate_ray_sphere)),
@@ -399,6 +428,113 @@ fn crate_insphere(f: &[&str]) -> Result<Verdict, String> {
 fn oracle_insphere(f: &[&str]) -> Result<Verdict, String> {
     check_sign::<15>(f, |v| {
         oracle::insphere(p3(v, 0), p3(v, 1), p3(v, 2), p3(v, 3), p3(v, 4))
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Predicates on constructed points: the points' inputs, then the sign.
+
+/// A constructed point the crate refuses: always a mismatch (every fixture
+/// line defines one point).
+fn refused(want: i8, e: exactray::InputError) -> Verdict {
+    Verdict::Mismatch {
+        expected: want.to_string(),
+        got: format!("construction refused: {e}"),
+    }
+}
+
+/// A sign line whose answer needs constructions: `sign(coordinates)`, or a
+/// construction error.
+fn check_constructed<const N: usize>(
+    f: &[&str],
+    sign: impl Fn(&[f64; N]) -> Result<i8, exactray::InputError>,
+) -> Result<Verdict, String> {
+    let (v, want) = parse_sign_case::<N>(f)?;
+    Ok(match sign(&v) {
+        Ok(got) => compare_signs(want, got),
+        Err(e) => refused(want, e),
+    })
+}
+
+fn lpi_of(v: &[f64], i: usize) -> Result<exactray::predicates::Lpi, exactray::InputError> {
+    let p = |k: usize| p3(v, i + k);
+    exactray::predicates::Lpi::new(p(0), p(1), p(2), p(3), p(4))
+}
+
+fn lpi_pt(v: &[f64], i: usize) -> Pt3 {
+    Pt3::Lpi(core::array::from_fn(|k| p3(v, i + k)))
+}
+
+/// The axis field of a `less_on_axis_lpi` line.
+fn axis_of(x: f64) -> Result<usize, String> {
+    match x {
+        0.0 => Ok(0),
+        1.0 => Ok(1),
+        2.0 => Ok(2),
+        _ => Err(format!("bad axis {x} (want 0, 1 or 2)")),
+    }
+}
+
+fn crate_orient3d_lpi(f: &[&str]) -> Result<Verdict, String> {
+    check_constructed::<24>(f, |v| {
+        let x = lpi_of(v, 3)?;
+        Ok(exactray::predicates::orient3d_implicit(p3(v, 0), p3(v, 1), p3(v, 2), &x).as_i8())
+    })
+}
+
+fn oracle_orient3d_lpi(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<24>(f, |v| {
+        let e = |i| Pt3::E(p3(v, i));
+        implicit_oracle::orient3d([e(0), e(1), e(2), lpi_pt(v, 3)]).unwrap_or(2)
+    })
+}
+
+fn crate_orient3d_tpi(f: &[&str]) -> Result<Verdict, String> {
+    check_constructed::<36>(f, |v| {
+        let plane = |i: usize| [p3(v, i), p3(v, i + 1), p3(v, i + 2)];
+        let x = exactray::predicates::Tpi::new(plane(3), plane(6), plane(9))?;
+        Ok(exactray::predicates::orient3d_implicit(p3(v, 0), p3(v, 1), p3(v, 2), &x).as_i8())
+    })
+}
+
+fn oracle_orient3d_tpi(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<36>(f, |v| {
+        let e = |i| Pt3::E(p3(v, i));
+        let plane = |i: usize| [p3(v, i), p3(v, i + 1), p3(v, i + 2)];
+        let x = Pt3::Tpi([plane(3), plane(6), plane(9)]);
+        implicit_oracle::orient3d([e(0), e(1), e(2), x]).unwrap_or(2)
+    })
+}
+
+fn crate_orient2d_ssi(f: &[&str]) -> Result<Verdict, String> {
+    check_constructed::<12>(f, |v| {
+        let x = exactray::predicates::Ssi::new(p2(v, 2), p2(v, 3), p2(v, 4), p2(v, 5))?;
+        Ok(exactray::predicates::orient2d_implicit(p2(v, 0), p2(v, 1), &x).as_i8())
+    })
+}
+
+fn oracle_orient2d_ssi(f: &[&str]) -> Result<Verdict, String> {
+    check_sign::<12>(f, |v| {
+        let x = Pt2::Ssi([p2(v, 2), p2(v, 3), p2(v, 4), p2(v, 5)]);
+        implicit_oracle::orient2d([Pt2::E(p2(v, 0)), Pt2::E(p2(v, 1)), x]).unwrap_or(2)
+    })
+}
+
+/// `axis p q r s t p' q' r' s' t' sign`: the points start after the axis.
+fn crate_less_on_axis_lpi(f: &[&str]) -> Result<Verdict, String> {
+    let axis = axis_of(parse_f64(f.first().ok_or("empty line")?)?)?;
+    check_constructed::<31>(f, |v| {
+        let (x, y) = (lpi_of(&v[1..], 0)?, lpi_of(&v[1..], 5)?);
+        let axes = exactray::predicates::Axis::ALL;
+        Ok(exactray::predicates::cmp_on_axis(&x, &y, axes[axis]) as i8)
+    })
+}
+
+fn oracle_less_on_axis_lpi(f: &[&str]) -> Result<Verdict, String> {
+    let axis = axis_of(parse_f64(f.first().ok_or("empty line")?)?)?;
+    check_sign::<31>(f, |v| {
+        implicit_oracle::cmp_on_axis3(lpi_pt(&v[1..], 0), lpi_pt(&v[1..], 5), axis)
+            .map_or(2, |o| o as i8)
     })
 }
 

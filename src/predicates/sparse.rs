@@ -27,12 +27,9 @@ use glam::{DVec2, DVec3};
 /// The exact sign of `(b - a) x (c - a)` for finite input, or `None` when
 /// the terms do not fit the accumulators.
 pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
-    let (bx, by) = (diff(b.x, a.x), diff(b.y, a.y));
-    let (cx, cy) = (diff(c.x, a.x), diff(c.y, a.y));
-    let mut terms = Terms::<8, 2>::new();
-    terms.push_product(false, &[bx, cy]);
-    terms.push_product(true, &[by, cx]);
-    sign_of_sum(&mut terms)
+    let b = [diff(b.x, a.x), diff(b.y, a.y)];
+    let c = [diff(c.x, a.x), diff(c.y, a.y)];
+    cross2_of(b, c)
 }
 
 /// The exact sign of `det[b - a, c - a, d - a]` for finite input, or `None`
@@ -242,8 +239,18 @@ fn reference<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> usize {
     (0..N).min_by_key(|&i| parts[i]).unwrap_or(N - 1)
 }
 
-/// The exact sign of `det[b, c, d]` for rows of exact differences.
-fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
+/// The exact sign of `e x f` for exact differences `e`, `f`, or `None`
+/// when the terms do not fit.
+pub(super) fn cross2_of(e: [Diff; 2], f: [Diff; 2]) -> Option<Sign> {
+    let mut terms = Terms::<8, 2>::new();
+    terms.push_product(false, &[e[0], f[1]]);
+    terms.push_product(true, &[e[1], f[0]]);
+    sign_of_sum(&mut terms)
+}
+
+/// The exact sign of `det[b, c, d]` for rows of exact differences (also
+/// the implicit points' weights).
+pub(super) fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
     let mut terms = Terms::<MAX_TERMS, 3>::new();
     // Expanded along z: z_u * (x_v y_w - x_w y_v) over (u, v, w) cyclic.
     for (u, v, w) in [(b, c, d), (c, d, b), (d, b, c)] {

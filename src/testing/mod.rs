@@ -44,6 +44,7 @@
 
 mod cases;
 mod generators;
+mod implicit;
 #[cfg(feature = "alloc")]
 mod meshes;
 mod pixels;
@@ -57,6 +58,7 @@ mod strategies;
 
 pub use cases::*;
 pub use generators::*;
+pub use implicit::*;
 #[cfg(feature = "alloc")]
 pub use meshes::*;
 pub use pixels::*;

@@ -2,7 +2,10 @@
 //!
 //! The per-family strategies ([`orient2d_inputs`], ...) draw a seed and run
 //! the deterministic generators of [`testing`](crate::testing) for an
-//! [`InputClass`]; [`small_scenes`] and [`spawned_rays`] do the same for
+//! [`InputClass`]; for the predicates on constructed points,
+//! [`orient3d_lpi_inputs`] and its siblings, and ready-made constructed
+//! points near degeneracy ([`lpi_near_triangle`], [`tpi_near_triangle`],
+//! [`ssi_near_line`], [`lpi_pair_near_equal`]); [`small_scenes`] and [`spawned_rays`] do the same for
 //! scenes of meshes and analytic shapes and for secondary rays on them; [`finite_f64`] and the `finite_*` point strategies cover
 //! every finite `f64` bit pattern. The thin wrappers ([`degenerate_orient2d`],
 //! [`near_degenerate_incircle`], ...) name the classes most tests want.
@@ -40,11 +43,13 @@
 //! ```
 
 use crate::arith::exponent::scale_pow2;
+use crate::predicates::{Lpi, Ssi, Tpi};
 use crate::scene::Scene;
 use crate::testing::finite_f64_from_bits;
 use crate::testing::{
-    InputClass, SCENE_PLACES, SpawnedRay, SplitMix64, incircle_case, insphere_case, orient2d_case,
-    orient3d_case, plane_side_case, random_scene, spawned_ray,
+    InputClass, SCENE_PLACES, SpawnedRay, SplitMix64, incircle_case, insphere_case,
+    less_on_axis_lpi_case, orient2d_case, orient2d_ssi_case, orient3d_case, orient3d_lpi_case,
+    orient3d_tpi_case, plane_side_case, random_scene, spawned_ray,
 };
 use alloc::sync::Arc;
 use glam::{DVec2, DVec3};
@@ -177,6 +182,101 @@ pub fn hard_insphere() -> impl Strategy<Value = [DVec3; 5]> {
 /// Plane-side arguments from every class, each equally likely.
 pub fn hard_plane_side() -> impl Strategy<Value = [DVec3; 5]> {
     any_class().prop_flat_map(plane_side_inputs)
+}
+
+/// `orient3d` with a line–plane point: `[a, b, c, p, q, r, s, t]` of the
+/// class (see [`orient3d_lpi_case`](crate::testing::orient3d_lpi_case)).
+pub fn orient3d_lpi_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 8]> {
+    seeded(class, orient3d_lpi_case)
+}
+
+/// `orient3d` with a three-plane point: `[a, b, c, u0, u1, u2, v0, v1, v2,
+/// w0, w1, w2]` of the class (see
+/// [`orient3d_tpi_case`](crate::testing::orient3d_tpi_case)).
+pub fn orient3d_tpi_inputs(class: InputClass) -> impl Strategy<Value = [DVec3; 12]> {
+    seeded(class, orient3d_tpi_case)
+}
+
+/// `orient2d` with a line–line point: `[a, b, p, q, r, s]` of the class
+/// (see [`orient2d_ssi_case`](crate::testing::orient2d_ssi_case)).
+pub fn orient2d_ssi_inputs(class: InputClass) -> impl Strategy<Value = [DVec2; 6]> {
+    seeded(class, orient2d_ssi_case)
+}
+
+/// Two line–plane points and an axis of the class (see
+/// [`less_on_axis_lpi_case`](crate::testing::less_on_axis_lpi_case)).
+pub fn less_on_axis_lpi_inputs(class: InputClass) -> impl Strategy<Value = ([DVec3; 10], usize)> {
+    seeded(class, less_on_axis_lpi_case)
+}
+
+/// The classes whose constructed points lie on, or a few ulps off, the
+/// explicit points' plane or line, at any scale: near-degenerate,
+/// degenerate, tiny, huge and mixed.
+fn near_degenerate_class() -> impl Strategy<Value = InputClass> {
+    proptest::sample::select(&InputClass::ALL[1..])
+}
+
+/// A triangle and a line–plane point on its plane, or a few ulps off it,
+/// at any scale (every class but `uniform`): where rounding the point gives
+/// wrong orientations.
+///
+/// ```
+/// use exactray::predicates::orient3d_implicit;
+/// use exactray::testing::lpi_near_triangle;
+/// use proptest::prelude::*;
+/// proptest! {
+///     #![proptest_config(ProptestConfig::with_cases(32))]
+///     // Swapping two vertices negates the orientation, exactly.
+///     fn swap_negates(([a, b, c], x) in lpi_near_triangle()) {
+///         prop_assert_eq!(orient3d_implicit(a, b, c, &x), -orient3d_implicit(b, a, c, &x));
+///     }
+/// }
+/// # swap_negates();
+/// ```
+pub fn lpi_near_triangle() -> impl Strategy<Value = ([DVec3; 3], Lpi)> {
+    near_degenerate_class()
+        .prop_flat_map(orient3d_lpi_inputs)
+        .prop_filter_map("a construction that is one point", |c| {
+            Lpi::new(c[3], c[4], c[5], c[6], c[7])
+                .ok()
+                .map(|x| ([c[0], c[1], c[2]], x))
+        })
+}
+
+/// A triangle and a three-plane point on its plane, or a few ulps off it,
+/// at any scale (as [`lpi_near_triangle`]).
+pub fn tpi_near_triangle() -> impl Strategy<Value = ([DVec3; 3], Tpi)> {
+    near_degenerate_class()
+        .prop_flat_map(orient3d_tpi_inputs)
+        .prop_filter_map("a construction that is one point", |c| {
+            Tpi::new([c[3], c[4], c[5]], [c[6], c[7], c[8]], [c[9], c[10], c[11]])
+                .ok()
+                .map(|x| ([c[0], c[1], c[2]], x))
+        })
+}
+
+/// Two points and a line–line point on their line, or a few ulps off it,
+/// at any scale (as [`lpi_near_triangle`]).
+pub fn ssi_near_line() -> impl Strategy<Value = ([DVec2; 2], Ssi)> {
+    near_degenerate_class()
+        .prop_flat_map(orient2d_ssi_inputs)
+        .prop_filter_map("a construction that is one point", |c| {
+            Ssi::new(c[2], c[3], c[4], c[5])
+                .ok()
+                .map(|x| ([c[0], c[1]], x))
+        })
+}
+
+/// Two line–plane points whose coordinates along the axis are equal, or a
+/// few ulps apart, at any scale, and the axis (0, 1 or 2).
+pub fn lpi_pair_near_equal() -> impl Strategy<Value = (Lpi, Lpi, usize)> {
+    near_degenerate_class()
+        .prop_flat_map(less_on_axis_lpi_inputs)
+        .prop_filter_map("constructions that are one point", |(c, axis)| {
+            let x = Lpi::new(c[0], c[1], c[2], c[3], c[4]).ok()?;
+            let y = Lpi::new(c[5], c[6], c[7], c[8], c[9]).ok()?;
+            Some((x, y, axis))
+        })
 }
 
 /// Scenes of 1 to 8 primitives from [`random_scene`]: spheres, capped and

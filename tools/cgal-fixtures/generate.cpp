@@ -8,6 +8,8 @@
 // This file is the driver: the table of kinds and main. The families live in
 // their own files: common.h (number types, randomness, exact IEEE helpers,
 // the sign-file Writer), predicates.cpp (orient2d, orient3d, plane_side),
+// implicit.cpp (orient3d_lpi, orient3d_tpi, orient2d_ssi, less_on_axis_lpi:
+// predicates on constructed points, constructed with Epeck),
 // nearest.cpp, ray.h (what the ray kinds share: exact roots, RayWriter),
 // ray_quadrics.cpp (ray_sphere, ray_cylinder, ray_cone, ray_quadric),
 // ray_triangle.cpp and ray_mesh.cpp (one mesh per file with closest-hit and
@@ -43,6 +45,9 @@ struct KindEntry {
   // ... or, for a kind with several files, writes <OUTDIR>/<name>-<set>.txt
   // itself.
   void (*generate_files)(const std::string& outdir);
+  // The kernel the answers come from, for the file's header (Epick unless
+  // named).
+  const char* kernels = "Epick";
 };
 
 // One row per fixture kind.
@@ -52,6 +57,10 @@ const KindEntry KINDS[] = {
     {"plane_side", gen_plane_side, nullptr},
     {"incircle", gen_incircle, nullptr},
     {"insphere", gen_insphere, nullptr},
+    {"orient3d_lpi", gen_orient3d_lpi, nullptr, "Epeck"},
+    {"orient3d_tpi", gen_orient3d_tpi, nullptr, "Epeck"},
+    {"orient2d_ssi", gen_orient2d_ssi, nullptr, "Epeck"},
+    {"less_on_axis_lpi", gen_less_on_axis_lpi, nullptr, "Epeck"},
     {"nearest", nullptr, gen_nearest_files},
     {"ray_sphere", nullptr, gen_ray_sphere_files},
     {"ray_cylinder", nullptr, gen_ray_cylinder_files},
@@ -83,7 +92,7 @@ int main(int argc, char** argv) {
       k.generate_files(outdir);
       continue;
     }
-    Writer w(outdir + "/" + k.name + ".txt", k.name);
+    Writer w(outdir + "/" + k.name + ".txt", k.name, k.kernels);
     k.generate(w);
     w.finish();
   }

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Rebuilds the generator and rewrites the fixtures it owns in tests/fixtures/:
 # orient2d.txt, orient3d.txt, plane_side.txt, incircle.txt, insphere.txt,
+# orient3d_lpi.txt, orient3d_tpi.txt, orient2d_ssi.txt, less_on_axis_lpi.txt,
 # one nearest-<set>.txt per point set, and ray_sphere.txt, ray_cylinder.txt,
 # ray_cone.txt, ray_quadric.txt, ray_triangle.txt, one ray_mesh-<mesh>.txt
 # per mesh (other files there are left alone). The output is deterministic:

@@ -27,6 +27,15 @@ little-endian, fields in order):
   edits that may plant a NaN or an infinity), an input-class byte (% 6:
   uniform, near-degenerate, degenerate, tiny, huge, mixed), a u64 generator
   seed, then an edit-count byte and the edits' bytes.
+- implicit: a selector byte (predicate = selector % 7: orient3d, orient2d,
+  projected orient2d, 3D axis, 2D axis, 3D along a line, 2D along a line;
+  mode = selector / 7 % 3: 0 raw bit patterns, 1 the generators' cases of an
+  input class, 2 the same with edits that may plant a NaN or an infinity);
+  for mode 0 a pool-size byte and the pool's u64 patterns, otherwise an
+  input-class byte, a u64 seed, an edit-count byte and 6 bytes per edit;
+  then per argument a kind byte (3D: % 4, 0-1 explicit, 2 Lpi, 3 Tpi; 2D: %
+  3, 0 explicit, else Ssi) and one index byte per input point, and an axis
+  byte.
 """
 import hashlib
 import random
@@ -123,6 +132,32 @@ def predicate_cases(rng):
         yield bytes([pred + 5 * mode, cls]) + struct.pack("<Q", rng.getrandbits(64)) + bytes([edits]) + tail
 
 
+def implicit_cases(rng):
+    # Every predicate and mode; points drawn from the pool by index bytes,
+    # which repeat often so that arguments share inputs.
+    while True:
+        pred, mode = rng.randrange(7), rng.choice([0, 1, 1, 1, 2])
+        three = pred in (0, 2, 3, 5)
+        out = bytes([pred + 7 * mode])
+        if mode == 0:
+            n = rng.randrange(8)
+            dim = 3 if three else 2
+            out += bytes([n]) + b"".join(struct.pack("<Q", bits(mixed(rng))) for _ in range((4 + n) * dim))
+            pool = 4 + n
+        else:
+            edits = rng.randrange(4)
+            out += bytes([rng.randrange(6)]) + struct.pack("<Q", rng.getrandbits(64)) + bytes([edits])
+            out += bytes(rng.randrange(256) for _ in range(6 * edits))
+            pool = 20 if three else 12
+        index = lambda: rng.randrange(min(pool, 6)) if rng.random() < 0.5 else rng.randrange(256)
+        for _ in range(4 if three else 3):
+            kind = rng.randrange(4 if three else 3)
+            count = {0: 1, 1: 1, 2: 5, 3: 9}[kind] if three else (1 if kind == 0 else 4)
+            out += bytes([kind]) + bytes(index() for _ in range(count))
+        out += bytes([rng.randrange(256)])
+        yield out
+
+
 def mesh_cases(rng):
     # Small meshes: fans around vertex 0 (shared edges) or random index
     # triples, lattice coordinates (raw bit patterns one time in ten), and
@@ -170,7 +205,8 @@ def main() -> int:
                         corpus("ray_quadrics", quadric_cases, 13),
                         corpus("roots", roots_cases, 14),
                         corpus("predicates", predicate_cases, 15),
-                        corpus("ray_mesh", mesh_cases, 16)]:
+                        corpus("ray_mesh", mesh_cases, 16),
+                        corpus("implicit", implicit_cases, 17)]:
         folder = ROOT / name
         have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
         if check:

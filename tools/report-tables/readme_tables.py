@@ -522,6 +522,21 @@ def notes(rep):
     return re.sub(r"^(#+) ", lambda m: "#" * (len(m.group(1)) + 2) + " ", body, flags=re.M)
 
 
+def implicit_table(rep):
+    """Predicates on constructed points: exactray, round-then-exact, and
+    the explicit predicate timed in the same loops (uniform rows)."""
+    rows = []
+    for inputs in rep.inputs("implicit"):
+        g = lambda m: rep.row("implicit", m, inputs)
+        ex = g("exactray")
+        explicit = g("explicit-orient3d") or g("explicit-orient2d")
+        rows.append([inputs, cell(ex), cell(g("round-then-exact")),
+                     "-" if explicit is None else ns(explicit["ns_per_op"]),
+                     "-" if explicit is None or ex is None else ratio(ex["ns_per_op"], explicit["ns_per_op"])])
+    return table(["inputs", "exactray ns (wrong)", "round-then-exact ns (wrong)",
+                  "explicit predicate ns, same loops", "exactray / explicit"], rows)
+
+
 BLOCKS = {
     "run": run_header,
     "readme-exactness": readme_exactness,
@@ -541,6 +556,7 @@ BLOCKS = {
     "render": render_table,
     "q2-summary": q2_summary,
     "delaunay": delaunay_table,
+    "implicit": implicit_table,
     "targets": targets,
     "notes": notes,
 }

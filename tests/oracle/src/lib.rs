@@ -6,6 +6,8 @@
 //!   polynomial and discriminant signs, the exact line–triangle crossing.
 //! - [`line_oracle`]: lines against spheres, cylinders, cones and general
 //!   quadrics: the exact root count and correctly rounded roots.
+//! - [`implicit_oracle`]: predicates on constructed points (line–plane,
+//!   three-plane and line–line intersections) as exact rational points.
 //! - [`mesh_oracle`]: rays and segments against triangle meshes by brute
 //!   force (`docs/fixture-format.md`'s `ray_mesh` rule: closed triangles, a ray in a
 //!   triangle's plane entering it).
@@ -13,6 +15,7 @@
 //! A workspace member of its own (`publish = false`), so that every user
 //! depends on it by name.
 
+pub mod implicit_oracle;
 pub mod line_oracle;
 pub mod mesh_oracle;
 pub mod oracle;

@@ -29,6 +29,7 @@ mod signs;
 mod targets;
 
 mod delaunay;
+mod implicit;
 mod incircle;
 mod insphere;
 mod nearest;
@@ -70,6 +71,11 @@ const FAMILIES: &[(&str, &str, Family)] = &[
     ("plane_side", "p and q against a triangle's plane", |cfg| {
         plane_side::family().run(cfg)
     }),
+    (
+        "implicit",
+        "predicates on constructed points (line-plane, three planes, two lines)",
+        implicit::run,
+    ),
     ("nearest", "nearest-point queries", nearest::run),
     (
         "nearest_build",

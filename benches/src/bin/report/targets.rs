@@ -130,6 +130,32 @@ fn targets(rows: &[Row]) -> Vec<Target> {
             });
         }
     }
+    // Predicates on constructed points: no wrong sign or order on any
+    // class; on uniform inputs at most 2x the explicit orient3d timed in
+    // the same loops.
+    const PREDICATES: [&str; 4] = [
+        "orient3d_lpi",
+        "orient3d_tpi",
+        "orient2d_ssi",
+        "less_on_axis_lpi",
+    ];
+    for pred in PREDICATES {
+        for class in [
+            "uniform",
+            "near-degenerate",
+            "degenerate",
+            "tiny",
+            "huge",
+            "mixed",
+        ] {
+            let inputs = &*String::leak(format!("{pred}:{class}"));
+            if class == "uniform" {
+                all.push(t("implicit", inputs, "explicit-orient3d", 2.0, true));
+            } else {
+                all.push(t("implicit", inputs, "", 0.0, true));
+            }
+        }
+    }
     all.extend(scene_targets(rows));
     all
 }
