@@ -1,5 +1,5 @@
 // orient3d_lpi, orient3d_tpi, orient2d_ssi, less_on_axis_lpi: predicates on
-// constructed points (FORMAT.md, "Predicates on constructed points"). The
+// constructed points (docs/fixture-format.md, "Predicates on constructed points"). The
 // intersection point is constructed exactly with CGAL's
 // Exact_predicates_exact_constructions_kernel (Epeck), then the exact
 // predicate is asked of it; plain rational arithmetic (RatK) constructs and

@@ -1,5 +1,5 @@
 //! implicit: predicates on constructed points (line–plane, three-plane and
-//! line–line intersections), `../shared/REPORT.md`'s `implicit` family.
+//! line–line intersections), `docs/report.md`'s `implicit` family.
 //!
 //! Inputs `<predicate>:<class>`: `orient3d_lpi` (a triangle and a
 //! line–plane point), `orient3d_tpi` (a triangle and a three-plane point),
