@@ -21,7 +21,7 @@
     reason = "calls the AVX2 kernels after detecting the feature"
 )]
 
-use super::{orient2d, orient3d};
+use super::{det, orient2d, orient3d};
 use crate::arith::exponent::in_range;
 use crate::arith::lanes::{BLOCK, Block};
 use crate::point::{IntoDVec2, IntoDVec3};
@@ -232,7 +232,7 @@ fn orient3d_many_in<P: IntoDVec3>(cases: &[[P; 4]], out: &mut [Sign]) -> usize {
         let (det, permanent, margin, zsum) = orient3d::stage_a_lanes(p[0], p[1], p[2], p[3]);
         let (det, permanent) = (det.0, permanent.0);
         let certified: [bool; BLOCK] =
-            core::array::from_fn(|k| orient3d::certifies(margin.0[k], zsum.0[k], 0.0));
+            core::array::from_fn(|k| det::certifies(margin.0[k], zsum.0[k], 0.0));
         if certified == [true; BLOCK] {
             for k in 0..BLOCK {
                 out[k] = sign_bits(det[k]);

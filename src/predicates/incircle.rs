@@ -2,8 +2,9 @@
 //! positive when `d` is inside the circle through counterclockwise `a, b, c`.
 //! Exact for every finite input.
 //!
-//! Stage ladder (see the [module docs](super)): filtered, small-integer
-//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+//! Stage ladder (see the [module docs](super)): 1 filtered, 2
+//! small-integer exact, 3 adaptive (`robust`), 4 scaled filter, 5
+//! big-integer exact.
 
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,

@@ -3,8 +3,9 @@
 //! `orient3d(a, b, c, d) > 0` (CGAL's convention, minus Shewchuk's).
 //! Exact for every finite input.
 //!
-//! Stage ladder (see the [module docs](super)): filtered, small-integer
-//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+//! Stage ladder (see the [module docs](super)): 0 semi-static filter, 1
+//! filtered, 2 small-integer exact (and the lattice stage), 3 adaptive
+//! (`robust`), 4 scaled filter, 5 big-integer exact.
 
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2,

@@ -34,33 +34,36 @@
 //!
 //! # How exactness is kept cheap
 //! Every predicate runs a ladder of stages, each named for what it
-//! guarantees, and stops at the first one that can certify the sign. In the
-//! order they are tried:
+//! guarantees, and stops at the first one that can certify the sign. The
+//! stages, numbered as in each predicate's file:
+//! 0. **semi-static filter** (orient3d and insphere): stage 1's
+//!    determinant with a bound from the largest difference on each axis
+//!    instead of the permanent, where those lie in a range that keeps the
+//!    bound valid. Answers almost every ordinary input for the price of the
+//!    determinant alone.
 //! 1. **filtered**: the plain `f64` determinant and an error bound computed
 //!    beside it (Shewchuk's stage A bound, widened by an absolute term so
 //!    that it holds under underflow too; overflow makes the bound infinite
-//!    and the stage declines). Answers almost all ordinary inputs.
-//! 2. **scaled filter**, tried here only when stage 1 declined because of
-//!    range (underflow or overflow): inputs scaled by powers of two so that
-//!    the largest is near 1, with an absolute term in the error bound for
-//!    what the scaling flushed towards zero. Answers tiny, huge and mixed
-//!    magnitudes that are not near-degenerate.
-//! 3. **small-integer exact**: when each input coordinate is an integer
+//!    and the stage declines).
+//! 2. **small-integer exact**: when each input coordinate is an integer
 //!    multiple of a common power of two that leaves it 62 bits or fewer, the
 //!    determinant is evaluated exactly in 64/128/256/320-bit integers.
 //!    Answers degenerate and near-degenerate inputs, and tiny or huge ones.
-//!    For incircle and insphere the **lattice** stage comes first: the
-//!    determinant is then a multiple of `2^(degree * lo)`, `2^lo` that
-//!    power of two, and when stage 1's error bound lies below that step,
-//!    the value stage 1 could not tell from zero is zero. Answers exactly
-//!    degenerate inputs with short significands at the cost of stage 1 and
-//!    a pass over the coordinates.
-//! 4. **adaptive**: Shewchuk's adaptive stages (the `robust` crate) on inputs
+//!    The **lattice** stage comes with it: the determinant is a multiple of
+//!    `2^(degree * lo)`, `2^lo` the inputs' finest bit, and when stage 1's
+//!    (or stage 0's) error bound lies below that step, the value it could
+//!    not tell from zero is zero. Answers exactly degenerate inputs with
+//!    short significands at the cost of the filter and a pass over the
+//!    coordinates.
+//! 3. **adaptive**: Shewchuk's adaptive stages (the `robust` crate) on inputs
 //!    scaled by a power of two, only when the exponent spread proves that no
 //!    step of that arithmetic underflows or overflows.
-//! 5. **scaled filter** again, when stage 1 declined on precision rather
-//!    than range and stages 3 and 4 could not run.
-//! 6. **big-integer exact**: always exact, used only when every other stage
+//! 4. **scaled filter**: inputs scaled by powers of two so that the largest
+//!    is near 1, with an absolute term in the error bound for what the
+//!    scaling flushed towards zero. Tried right after stage 1 when stage 1
+//!    declined on range (underflow or overflow: tiny, huge and mixed
+//!    magnitudes that are not near-degenerate), else after stage 3.
+//! 5. **big-integer exact**: always exact, used only when every other stage
 //!    declined. First sparse exact terms: each coordinate difference as at
 //!    most two `f64` significands with explicit exponents (or, for incircle
 //!    and insphere when that makes fewer terms, the coordinates themselves),
@@ -115,6 +118,7 @@
 #[cfg(feature = "alloc")]
 pub(crate) mod ball;
 mod batch;
+pub(crate) mod det;
 pub(crate) mod distance;
 mod implicit;
 mod incircle;

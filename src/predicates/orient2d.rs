@@ -1,7 +1,8 @@
 //! orient2d: the sign of `(b - a) x (c - a)`, exact for every finite input.
 //!
-//! Stage ladder (see the [module docs](super)): filtered, small-integer
-//! exact, adaptive (`robust`), scaled filter, big-integer exact. The
+//! Stage ladder (see the [module docs](super)): 1 filtered, 2
+//! small-integer exact, 3 adaptive (`robust`), 4 scaled filter, 5
+//! big-integer exact. The
 //! small-integer stage has a quick entry (`unit_integer`) tried first for
 //! every input the filter declines: it answers almost all near-degenerate,
 //! degenerate and tiny inputs before the cold path.

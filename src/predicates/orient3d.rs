@@ -1,9 +1,11 @@
 //! orient3d: the sign of `det[b - a, c - a, d - a]`, exact for every finite
 //! input (CGAL's convention, minus Shewchuk's).
 //!
-//! Stage ladder (see the [module docs](super)): filtered, small-integer
-//! exact, adaptive (`robust`), scaled filter, big-integer exact.
+//! Stage ladder (see the [module docs](super)): 0 semi-static filter, 1
+//! filtered, 2 small-integer exact (and the lattice stage), 3 adaptive
+//! (`robust`), 4 scaled filter, 5 big-integer exact.
 
+use super::det::{A, certifies, det3_wide, determinant, small_det3, stage_a_rows};
 use super::sparse;
 use crate::arith::exponent::{
     Grain, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2, unit_integers, unit_scale,
@@ -13,23 +15,6 @@ use crate::arith::lanes::Lanes;
 use crate::arith::magnitude::{all_within, larger, larger3};
 use crate::sign::Sign;
 use glam::DVec3;
-
-/// Shewchuk's `o3derrboundA = (7 + 56 eps) eps`, `eps = 2^-53`: with no
-/// underflow, `|det_computed - det| <= A * permanent` (Shewchuk 1997,
-/// section 4.3; our determinant is his with rows relabelled, the same
-/// operations on the same kind of operands).
-const A: f64 = (7.0 + 56.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
-
-/// Underflow, per unit of `|Bz| + |Cz| + |Dz|`: a 2x2-minor product that
-/// lands below `2^-1022` is off by up to `2^-1075` absolutely; two of them
-/// per minor, then multiplied by that row's z: `2 * 2^-1075 * |z|`, so
-/// `2^-1074` per unit of z; `2^-1073` leaves a factor 2.
-const Z_SLACK: f64 = 2.0 * TINY;
-
-/// Underflow, absolute: the three final products (`3 * 2^-1075`), the
-/// rounding of `A * permanent` and of `Z_SLACK * sum` (`2^-1075` each):
-/// `5 * 2^-1075 < 2^-1072`; `2^-1071` leaves a factor 2.
-const UNDERFLOW_SLACK: f64 = 8.0 * TINY;
 
 /// Span (per axis) of the small-integer stage: coordinates below `2^61`,
 /// differences below `2^62` (one limb), 2x2 minors below `2^125` (two),
@@ -47,10 +32,6 @@ const ADAPTIVE_SPAN: i32 = 300;
 /// triple products moves by at most `3 * 4 * 2^-1073`, in all
 /// `72 * 2^-1073 < 2^-1066`. `2^-1064` leaves a factor 4.
 const SCALED_SLACK: f64 = 1024.0 * TINY;
-
-/// `2^1000`: the slack comparison is made at this scale so that its
-/// operands are normal numbers (see `filtered`).
-const LIFT: f64 = pow2(1000);
 
 /// Factor of the semi-static bound, `6 A (1 + 2^-40)` (see `semi_static`).
 const SEMI_STATIC: f64 = 6.0 * A * (1.0 + 1.0 / (1u64 << 40) as f64);
@@ -173,14 +154,6 @@ fn semi_static(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Result<Sign, Option<[f
     }
 }
 
-/// Stage 1's determinant of the rows `bb`, `cc`, `dd`, expanded along z.
-#[inline(always)]
-fn determinant<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> T {
-    bb[2] * (cc[0] * dd[1] - dd[0] * cc[1])
-        + cc[2] * (dd[0] * bb[1] - bb[0] * dd[1])
-        + dd[2] * (bb[0] * cc[1] - cc[0] * bb[1])
-}
-
 /// Stage 1: the `f64` determinant expanded along z, certified by a forward
 /// error bound. `Err(permanent)` when the bound cannot certify the sign.
 #[inline(always)]
@@ -212,42 +185,6 @@ fn stage_a(a: DVec3, b: DVec3, c: DVec3, d: DVec3, extra_slack: f64) -> (f64, f6
 pub(super) fn stage_a_lanes<T: Lanes>(a: [T; 3], b: [T; 3], c: [T; 3], d: [T; 3]) -> (T, T, T, T) {
     let rel = |p: [T; 3]| [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
     stage_a_rows(rel(b), rel(c), rel(d))
-}
-
-/// [`stage_a_lanes`] from the three rows of the determinant, each a
-/// rounded difference of input coordinates or an input vector itself: the
-/// bound `A` accounts for one rounding in every row entry, so a row that is
-/// exact (a ray's direction) only leaves it less to cover. Underflow in a
-/// difference is exact, so the slack terms hold for either kind of row.
-#[inline(always)]
-pub(super) fn stage_a_rows<T: Lanes>(bb: [T; 3], cc: [T; 3], dd: [T; 3]) -> (T, T, T, T) {
-    let cxdy = cc[0] * dd[1];
-    let dxcy = dd[0] * cc[1];
-    let dxby = dd[0] * bb[1];
-    let bxdy = bb[0] * dd[1];
-    let bxcy = bb[0] * cc[1];
-    let cxby = cc[0] * bb[1];
-    let det = determinant(bb, cc, dd);
-    let (bz, cz, dz) = (bb[2].abs(), cc[2].abs(), dd[2].abs());
-    let permanent = (cxdy.abs() + dxcy.abs()) * bz
-        + (dxby.abs() + bxdy.abs()) * cz
-        + (bxcy.abs() + cxby.abs()) * dz;
-    let margin = (det.abs() - T::splat(A) * permanent) * T::splat(LIFT);
-    (det, permanent, margin, bz + cz + dz)
-}
-
-/// Whether the margin of `stage_a_lanes` certifies the sign, with
-/// `extra_slack` (the scaled filter's) on top of the underflow slack.
-///
-/// `|det| - A * permanent > Z_SLACK * (bz + cz + dz) + UNDERFLOW_SLACK`,
-/// both sides times 2^1000: the slack constants are subnormal, and
-/// arithmetic on them costs a microcode assist on x86 on every call.
-/// Scaling the left side by a power of two is exact (an overflow to
-/// infinity only where the inequality holds anyway); the right side's
-/// constants are normal and its rounding is within their factor-2 margin.
-#[inline(always)]
-pub(super) fn certifies(margin: f64, zsum: f64, extra_slack: f64) -> bool {
-    margin > (Z_SLACK * LIFT) * zsum + (UNDERFLOW_SLACK + extra_slack) * LIFT
 }
 
 /// Stage 2: each axis as integers below `2^SMALL_SPAN` at its own scale,
@@ -328,36 +265,6 @@ fn exact(points: &[DVec3; 4], in_range: bool) -> Sign {
     sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(points, lo))
 }
 
-/// The sign of `det[b, c, d]` for integer rows below `2^62` in magnitude:
-/// minors in `i128`, and the 189-bit determinant as an `i128` high part and
-/// a `u64` low part.
-pub(super) fn small_det3([b, c, d]: [[i64; 3]; 3]) -> Sign {
-    let minor =
-        |u: [i64; 3], v: [i64; 3]| u[0] as i128 * v[1] as i128 - v[0] as i128 * u[1] as i128;
-    // det = sum z * m with |z| < 2^62, |m| < 2^125. Write m = hi 2^64 + lo
-    // (lo in [0, 2^64)) and z * lo = q 2^64 + r: then
-    // det = (sum z hi + sum q + carry(sum r)) 2^64 + low64(sum r), where the
-    // high part stays below 2^126 and the low part is non-negative.
-    let mut high: i128 = 0;
-    let mut low: u128 = 0;
-    for (z, m) in [
-        (b[2], minor(c, d)),
-        (c[2], minor(d, b)),
-        (d[2], minor(b, c)),
-    ] {
-        high += z as i128 * (m >> 64);
-        let zl = z as i128 * (m as u64 as i128);
-        high += zl >> 64;
-        low += zl as u64 as u128;
-    }
-    high += (low >> 64) as i128;
-    if high != 0 {
-        Sign::from_i8(high.signum() as i8)
-    } else {
-        Sign::from_i8((low as u64 != 0) as i8)
-    }
-}
-
 /// Stage 5: each axis as integers at its finest bit `lo[axis]`, the
 /// determinant in `D`-limb differences, `M`-limb minors and an `R`-limb
 /// result. `<34, 67, 100>` holds every finite input: coordinates below `2^2098` (a finite `f64` over its
@@ -380,20 +287,6 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
         [q[0].sub(&a[0]), q[1].sub(&a[1]), q[2].sub(&a[2])]
     };
     det3_wide::<D, M, R>(&[rel(p[1]), rel(p[2]), rel(p[3])]).sign()
-}
-
-/// `det[b, c, d]` of integer rows in `D`-limb integers, with `M`-limb
-/// minors and an `R`-limb result; the caller picks the sizes from a bound
-/// on the rows.
-pub(crate) fn det3_wide<const D: usize, const M: usize, const R: usize>(
-    [b, c, d]: &[[FixedInt<D>; 3]; 3],
-) -> FixedInt<R> {
-    let minor = |u: &[FixedInt<D>; 3], v: &[FixedInt<D>; 3]| {
-        FixedInt::<M>::mul(&u[0], &v[1]).sub(&FixedInt::<M>::mul(&v[0], &u[1]))
-    };
-    FixedInt::<R>::mul(&b[2], &minor(c, d))
-        .add(&FixedInt::<R>::mul(&c[2], &minor(d, b)))
-        .add(&FixedInt::<R>::mul(&d[2], &minor(b, c)))
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 //! small-integer exact, sparse exact terms, big-integer exact). Where the line meets the triangle's plane is
 //! the exact ray–triangle cast's plane parameter (`query::ray::triangle`).
 
-use super::orient3d::{certifies, det3_wide, small_det3, stage_a_rows};
+use super::det::{certifies, det3_wide, small_det3, stage_a_rows};
 use super::sparse;
 use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, row};
 use crate::arith::exponent::{Grain, to_integer_i64};

@@ -46,7 +46,7 @@ use crate::arith::exponent::{Grain, split};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt, limbs_of_degree};
 use crate::interval::Interval;
 use crate::predicates::orient3d;
-use crate::predicates::orient3d::det3_wide;
+use crate::predicates::det::det3_wide;
 use crate::query::ray::Ray;
 use crate::shape::Triangle;
 use crate::sign::Sign;
