@@ -95,7 +95,8 @@ impl<P: Point<D>, const D: usize> Exact for AxisExact<P, D> {
         let o = exact::ints::<K, D>(self.origin, lo);
         let [x, y]: [IntHom<K, D>; 2] = super::homs(&self.p, &o, lo);
         let k = self.axis;
-        let v = exact::mul::<N, _, _>(&x.l[k], &y.w).sub(&exact::mul(&y.l[k], &x.w));
+        let xy: Int<N> = exact::mul(&x.l[k], &y.w);
+        let v = xy.sub(&exact::mul(&y.l[k], &x.w));
         with_weights(v.sign(), &self.p)
     }
 }
@@ -172,7 +173,8 @@ impl<P: Point<D>, const D: usize> Exact for AlongExact<P, D> {
         let [d, x, y] = &h;
         let mut v = Int::<N>::ZERO;
         for k in 0..D {
-            let r = exact::mul::<N, _, _>(&y.l[k], &x.w).sub(&exact::mul(&x.l[k], &y.w));
+            let yx: Int<N> = exact::mul(&y.l[k], &x.w);
+            let r = yx.sub(&exact::mul(&x.l[k], &y.w));
             v = v.add(&exact::mul(&r, &d.l[k]));
         }
         with_weights(v.sign(), &self.p)

@@ -243,7 +243,7 @@ fn expanded_exact<const K: usize, const N: usize, const D: usize, const L: usize
 ) -> Sign {
     let mut sum = Int::<N>::ZERO;
     for (i, hi) in h.iter().enumerate() {
-        let t = exact::mul::<N, _, _>(&hi.w, &det(i));
+        let t: Int<N> = exact::mul(&hi.w, &det(i));
         sum = if (i % 2 == 1) == odd {
             sum.add(&t)
         } else {
