@@ -119,4 +119,3 @@ pub(crate) fn det3_wide<const D: usize, const M: usize, const R: usize>(
         .add(&FixedInt::<R>::mul(&c[2], &minor(d, b)))
         .add(&FixedInt::<R>::mul(&d[2], &minor(b, c)))
 }
-

@@ -15,8 +15,8 @@ use crate::arith::exponent::{pow2, to_integer_i64};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
-use crate::predicates::orient_dir::{SMALL_SPAN, grains};
 use crate::predicates::det::det3_wide;
+use crate::predicates::orient_dir::{SMALL_SPAN, grains};
 use crate::query::ray::Ray;
 use glam::DVec3;
 
