@@ -4,10 +4,9 @@
 //! [`Scene`]'s docs give the rule its queries follow and what its
 //! hierarchy guarantees.
 
-use super::build::{self, Item};
-use super::traverse::{BoxRay, Visitor, walk};
-use super::{MeshHit, TriangleBvh, TriangleMesh};
+use super::{MeshHit, TriangleMesh};
 use crate::arith::roundoff::gamma;
+use crate::bvh::boxes::{BoxBvh, BoxRay, BvhBuilder, Item, Visitor, walk};
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -215,7 +214,7 @@ impl SceneBuilder {
         }
         Scene {
             primitives: self.primitives,
-            bvh: build::build(items).into(),
+            bvh: BoxBvh::build(items, BvhBuilder::BinnedSah),
             unbounded,
         }
     }
@@ -289,7 +288,7 @@ impl SceneBuilder {
 #[derive(Clone, Debug)]
 pub struct Scene {
     primitives: Vec<Primitive>,
-    bvh: TriangleBvh,
+    bvh: BoxBvh,
     unbounded: Vec<u32>,
 }
 

@@ -35,13 +35,11 @@
 //!   `ns_per_op`: spawning and tracing one secondary ray.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
+use exactray::bvh::boxes::{BvhBuilder, PlocQuality};
 use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray, Watertight};
 use exactray::scene::BatchQueries;
-use exactray::scene::{
-    BvhBuilder, MeshHit, PlocQuality, TraceStats, TriangleMesh, reflect_above, spawn_ray,
-    spawn_ray_to,
-};
+use exactray::scene::{MeshHit, TraceStats, TriangleMesh, reflect_above, spawn_ray, spawn_ray_to};
 use exactray::testing::{
     SceneMesh, SplitMix64, camera_rays, cosine_direction, displaced_sphere, room, room_camera_rays,
     terrain,

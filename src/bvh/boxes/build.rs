@@ -31,10 +31,10 @@ const SAH_DEPTH: usize = 32;
 /// primitive): its box, its centre (rounded: only the split choice reads
 /// it) and its index in the mesh (its id in the scene).
 #[derive(Clone, Copy)]
-pub(super) struct Item {
-    pub min: DVec3,
-    pub max: DVec3,
-    pub index: u32,
+pub(crate) struct Item {
+    pub(crate) min: DVec3,
+    pub(crate) max: DVec3,
+    pub(crate) index: u32,
 }
 
 impl Item {

@@ -89,7 +89,7 @@
 )]
 
 use super::wide::{WIDTH, WideNode};
-use super::{MAX_DEPTH, TriangleBvh};
+use super::{BoxBvh, MAX_DEPTH};
 use crate::arith::roundoff::gamma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
@@ -103,7 +103,7 @@ const SLACK: f64 = f64::from_bits(1 << 4);
 /// parameter covered (1 for a segment's exact end, see
 /// `TriangleMesh::occluded_between_with`).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct BoxRay<const E: u32 = 0> {
+pub(crate) struct BoxRay<const E: u32 = 0> {
     origin: DVec3,
     direction: DVec3,
     inv: DVec3,
@@ -119,7 +119,7 @@ impl<const E: u32> BoxRay<E> {
     /// `|t - t'| <= gamma(4 + E) |t'|`) and the widening's own three.
     const WIDEN: f64 = gamma(7 + E);
 
-    pub(super) fn of(ray: &Ray) -> BoxRay<E> {
+    pub(crate) fn of(ray: &Ray) -> BoxRay<E> {
         let d = ray.direction();
         let inv = DVec3::ONE / d;
         let divide = (0..3).any(|k| d[k] != 0.0 && !inv[k].is_normal());
@@ -206,7 +206,7 @@ impl<const E: u32> BoxRay<E> {
 }
 
 /// What a walk does at the leaves.
-pub(super) trait Visitor {
+pub(crate) trait Visitor {
     /// The current upper bound of the parameters still wanted.
     fn max(&self) -> f64;
     /// Looks at a leaf's items `order[start .. start + count]` (a mesh's
@@ -237,8 +237,8 @@ const STACK: usize = 3 * MAX_DEPTH;
 /// MAX_DEPTH` entries, which the builders' depth bound never exceeds (see
 /// the module docs).
 #[inline(always)]
-pub(super) fn walk<V: Visitor, const E: u32>(
-    bvh: &TriangleBvh,
+pub(crate) fn walk<V: Visitor, const E: u32>(
+    bvh: &BoxBvh,
     ray: &BoxRay<E>,
     range: Interval,
     v: &mut V,
@@ -252,7 +252,7 @@ pub(super) fn walk<V: Visitor, const E: u32>(
 
 /// [`walk`], with `DIVIDE` the ray's `divide`.
 fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
-    bvh: &TriangleBvh,
+    bvh: &BoxBvh,
     ray: &BoxRay<E>,
     range: Interval,
     v: &mut V,
@@ -337,7 +337,7 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
 
 #[cfg(test)]
 mod tests {
-    use super::super::TriangleMesh;
+    use super::super::{BvhBuilder, Item};
     use super::*;
     use alloc::vec::Vec;
 
@@ -540,14 +540,22 @@ mod tests {
             triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
         }
         #[cfg_attr(not(feature = "ploc"), allow(unused_mut))]
-        let mut builders = alloc::vec![super::super::BvhBuilder::BinnedSah];
+        let mut builders = alloc::vec![BvhBuilder::BinnedSah];
         #[cfg(feature = "ploc")]
-        builders.push(super::super::BvhBuilder::Ploc(
-            super::super::PlocQuality::Fast,
-        ));
+        builders.push(BvhBuilder::Ploc(super::super::PlocQuality::Fast));
         for builder in builders {
-            let mesh = TriangleMesh::with_builder(&vertices, &triangles, builder).unwrap();
-            let bvh = &mesh.bvh;
+            let items = triangles
+                .iter()
+                .map(|t: &[u32; 3]| {
+                    let [a, b, c] = t.map(|i| DVec3::from(vertices[i as usize]));
+                    Item {
+                        min: a.min(b).min(c),
+                        max: a.max(b).max(c),
+                        index: t[0] / 3,
+                    }
+                })
+                .collect();
+            let bvh = &BoxBvh::build(items, builder);
             assert!(bvh.nodes.len() > 10);
             let mut leaves = Vec::new();
             for n in &bvh.nodes {
@@ -580,12 +588,12 @@ mod tests {
                     max: range.max(),
                     seen: Vec::new(),
                 };
-                walk(&mesh.bvh, &BoxRay::<0>::of(&ray), range, &mut ours);
+                walk(bvh, &BoxRay::<0>::of(&ray), range, &mut ours);
                 let mut segment = Leaves {
                     max: range.max(),
                     seen: Vec::new(),
                 };
-                walk(&mesh.bvh, &BoxRay::<1>::of(&ray), range, &mut segment);
+                walk(bvh, &BoxRay::<1>::of(&ray), range, &mut segment);
                 let (o, d) = (o.map(i128::from), d.map(i128::from));
                 for &(lo, hi, start, count) in &leaves {
                     if exact_meets(lo, hi, o, d, max.map(i128::from)) {

@@ -50,7 +50,7 @@ use core::mem::size_of;
 use glam::DVec3;
 
 /// Children per wide node.
-pub(super) const WIDTH: usize = 4;
+pub(crate) const WIDTH: usize = 4;
 
 /// A wide node, 224 bytes: per lane `l` the child's box (`min[k][l]`,
 /// `max[k][l]` on axis `k`, exact), and `count[l] > 0` for a leaf holding
@@ -60,10 +60,10 @@ pub(super) const WIDTH: usize = 4;
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(32))]
 pub(crate) struct WideNode {
-    pub(super) min: [[f64; WIDTH]; 3],
-    pub(super) max: [[f64; WIDTH]; 3],
-    pub(super) link: [u32; WIDTH],
-    pub(super) count: [u32; WIDTH],
+    pub(crate) min: [[f64; WIDTH]; 3],
+    pub(crate) max: [[f64; WIDTH]; 3],
+    pub(crate) link: [u32; WIDTH],
+    pub(crate) count: [u32; WIDTH],
 }
 
 // Six SoA bound rows of four `f64` and two rows of four `u32`: 224 bytes,
@@ -74,7 +74,7 @@ const _: () = assert!(core::mem::align_of::<WideNode>() == 32);
 
 impl WideNode {
     /// Every lane empty (see the module docs).
-    pub(super) const EMPTY: WideNode = WideNode {
+    pub(crate) const EMPTY: WideNode = WideNode {
         min: [[f64::INFINITY; WIDTH]; 3],
         max: [[f64::NEG_INFINITY; WIDTH]; 3],
         link: [0; WIDTH],
@@ -90,7 +90,7 @@ impl WideNode {
     }
 
     /// The union of the lanes' boxes (exact; empty lanes add nothing).
-    pub(super) fn bounds(&self) -> (DVec3, DVec3) {
+    pub(crate) fn bounds(&self) -> (DVec3, DVec3) {
         let mut lo = DVec3::INFINITY;
         let mut hi = DVec3::NEG_INFINITY;
         for l in 0..WIDTH {
