@@ -428,6 +428,8 @@ struct Counted<'a, V> {
 }
 
 impl<V: Visitor> Visitor for Counted<'_, V> {
+    const ORDERED: bool = V::ORDERED;
+
     #[inline]
     fn max(&self) -> f64 {
         self.inner.max()
@@ -490,6 +492,8 @@ struct AnyHit<'a, T: TriangleTest> {
 }
 
 impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
+    const ORDERED: bool = false;
+
     #[inline]
     fn max(&self) -> f64 {
         self.range.max()
@@ -513,6 +517,8 @@ struct SegmentHit<'a, T: TriangleTest> {
 }
 
 impl<T: TriangleTest> Visitor for SegmentHit<'_, T> {
+    const ORDERED: bool = false;
+
     #[inline]
     fn max(&self) -> f64 {
         1.0

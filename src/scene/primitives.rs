@@ -466,6 +466,8 @@ impl<T: TriangleTest> AnyHit<'_, T> {
 }
 
 impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
+    const ORDERED: bool = false;
+
     #[inline]
     fn max(&self) -> f64 {
         self.max

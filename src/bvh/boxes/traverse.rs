@@ -72,8 +72,9 @@
 //! (below the exact entry) is at most the widened `M'`: the child is kept.
 //!
 //! # The stack
-//! Expanding a wide node pushes at most four children, nearest on top,
-//! and the walk then pops from that group only until it expands one of
+//! Expanding a wide node pushes at most four children (nearest on top for
+//! a closest-hit walk, in lane order for an any-hit one), and the walk
+//! then pops from that group only until it expands one of
 //! them (entries pushed by the nodes below are all popped first). So when
 //! a node is expanded the stack holds at most three entries for each wide
 //! node above it on its path. Each wide node of a path is collapsed from
@@ -207,7 +208,14 @@ impl<const E: u32> BoxRay<E> {
 
 /// What a walk does at the leaves.
 pub(crate) trait Visitor {
-    /// The current upper bound of the parameters still wanted.
+    /// Whether the walk visits a node's children nearest first and culls a
+    /// pending child again when [`Visitor::max`] has shrunk: a closest-hit
+    /// query's walk. An any-hit query, whose bound never shrinks and which
+    /// stops at its first hit wherever it lies, sets it to `false`: its
+    /// walk neither sorts nor culls on the way back.
+    const ORDERED: bool = true;
+    /// The current upper bound of the parameters still wanted (constant
+    /// for a visitor that is not [`Visitor::ORDERED`]).
     fn max(&self) -> f64;
     /// Looks at a leaf's items `order[start .. start + count]` (a mesh's
     /// triangles, a scene's primitives); `true` stops the walk.
@@ -232,7 +240,8 @@ struct Pending {
 const STACK: usize = 3 * MAX_DEPTH;
 
 /// Walks every leaf whose box the ray's exact segment `[range.min,
-/// visitor.max()]` meets, a node's children of smaller entry first. The
+/// visitor.max()]` meets, a node's children of smaller entry first for an
+/// [ordered](Visitor::ORDERED) visitor, in lane order otherwise. The
 /// stack holds up to three pending children per wide level: `3 *
 /// MAX_DEPTH` entries, which the builders' depth bound never exceeds (see
 /// the module docs).
@@ -281,11 +290,25 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
                 continue;
             }
         }
+        if !V::ORDERED {
+            // Any hit: the lanes kept in lane order, no sorting.
+            while mask != 0 {
+                let l = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                // A slot is free, as below (see the module docs).
+                stack[top] = MaybeUninit::new(Pending {
+                    entry: lower[l],
+                    link: node.link[l],
+                    count: node.count[l],
+                });
+                top += 1;
+            }
+        }
         // The lanes kept, sorted by entry, farthest first: pushed in that
         // order, the nearest is popped first.
         let mut kept = [(0.0, 0usize); WIDTH];
         let mut n = 0;
-        while mask != 0 {
+        while V::ORDERED && mask != 0 {
             let l = mask.trailing_zeros() as usize;
             mask &= mask - 1;
             let x = (lower[l], l);
@@ -319,7 +342,7 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
             let p = unsafe { stack[top].assume_init() };
             // Culled again when the range has shrunk below its entry since
             // it was pushed (see the module docs).
-            if p.entry > BoxRay::<E>::widen_up(v.max()) {
+            if V::ORDERED && p.entry > BoxRay::<E>::widen_up(v.max()) {
                 continue;
             }
             if p.count == 0 {
