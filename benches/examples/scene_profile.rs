@@ -17,11 +17,11 @@
 //! function of its own, so that callgrind's inclusive counts divided by Q
 //! give instructions per ray. A fifth argument `time` prints same-run
 //! medians of ns per ray instead (15 alternating rounds); `stats` prints
-//! the walk's work per ray.
+//! the walk's work per ray; `batch` the speed-up of the rayon batch.
 
 use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray};
-use exactray::scene::{MeshHit, TraceStats, TriangleMesh, spawn_ray, spawn_ray_to};
+use exactray::scene::{BatchQueries, MeshHit, TraceStats, TriangleMesh, spawn_ray, spawn_ray_to};
 use exactray::testing::{
     SceneMesh, SplitMix64, camera_rays, cosine_direction, displaced_sphere, room, room_camera_rays,
 };
@@ -129,6 +129,35 @@ fn main() {
                 median(0),
                 median(1)
             );
+        }
+        Some("batch") => {
+            // `closest_hits` on this thread against `par_closest_hits` on
+            // rayon's pool, in calls of `chunk` rays (the report's 2048,
+            // and all the rays at once), alternating, 15 rounds.
+            let plain: Vec<Ray> = rays.iter().map(|r| r.0).collect();
+            for chunk in [2048, plain.len()] {
+                let mut out = vec![None; plain.len()];
+                let pass = |parallel: bool, out: &mut [Option<MeshHit>]| {
+                    let t = Instant::now();
+                    for (r, o) in plain.chunks(chunk).zip(out.chunks_mut(chunk)) {
+                        let done = if parallel {
+                            mesh.par_closest_hits(r, Interval::FORWARD, o)
+                        } else {
+                            mesh.closest_hits(r, Interval::FORWARD, o)
+                        };
+                        done.expect("one answer per ray");
+                    }
+                    t.elapsed().as_secs_f64()
+                };
+                let mut ratios: Vec<f64> = (0..15)
+                    .map(|_| pass(false, &mut out) / pass(true, &mut out))
+                    .collect();
+                ratios.sort_by(f64::total_cmp);
+                println!(
+                    "{kind} {n}, calls of {chunk} rays: 2 threads {:.2}x faster than 1 (median of 15)",
+                    ratios[7]
+                );
+            }
         }
         Some("stats") => {
             let mut stats = TraceStats::default();

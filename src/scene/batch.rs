@@ -16,7 +16,10 @@ fn each_into<Q, R>(queries: &[Q], out: &mut [R], f: impl Fn(&Q) -> R) -> Result<
     Ok(())
 }
 
-/// [`each_into`] over rayon's thread pool.
+/// [`each_into`] over rayon's thread pool, in contiguous blocks: each
+/// task runs [`each_into`]'s loop over a block of queries and writes one
+/// block of `out`, so no two tasks write the same cache line but at a
+/// block's ends, and the per-ray work is the serial loop's.
 #[cfg(feature = "rayon")]
 fn par_each_into<Q: Sync, R: Send>(
     queries: &[Q],
@@ -25,13 +28,19 @@ fn par_each_into<Q: Sync, R: Send>(
 ) -> Result<(), InputError> {
     use rayon::prelude::*;
     InputError::check_lengths(queries.len(), out.len())?;
-    // A task of at least 64 rays: a ray query takes 0.1 to a few µs, so a
-    // task outweighs rayon's per-task cost (about a µs).
+    // About eight blocks per thread, so that a thread slowed by other work
+    // leaves the rest to be stolen, and at least 64 queries per block: a
+    // ray query takes 0.1 to a few µs, so a block outweighs rayon's cost
+    // per task (about a µs).
+    let block = (queries.len() / (8 * rayon::current_num_threads())).max(64);
     queries
-        .par_iter()
-        .zip(out.par_iter_mut())
-        .with_min_len(64)
-        .for_each(|(q, o)| *o = f(q));
+        .par_chunks(block)
+        .zip(out.par_chunks_mut(block))
+        .for_each(|(q, o)| {
+            for (q, o) in q.iter().zip(o) {
+                *o = f(q);
+            }
+        });
     Ok(())
 }
 
