@@ -6,7 +6,7 @@
 
 use super::{MeshHit, TriangleMesh};
 use crate::arith::roundoff::gamma;
-use crate::bvh::boxes::{BoxBvh, BoxRay, BvhBuilder, Item, Visitor, walk};
+use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk};
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -548,7 +548,7 @@ impl Scene {
         for &id in &self.unbounded {
             v.consider(id);
         }
-        walk(&self.bvh, &BoxRay::<0>::of(ray), walked(range), &mut v);
+        walk::<_, 0>(&self.bvh, ray, walked(range), &mut v);
         v.best
     }
 
@@ -574,7 +574,7 @@ impl Scene {
             test: PhantomData,
         };
         if !v.leaf(&self.unbounded) {
-            walk(&self.bvh, &BoxRay::<0>::of(ray), walked(range), &mut v);
+            walk::<_, 0>(&self.bvh, ray, walked(range), &mut v);
         }
         v.found
     }

@@ -6,14 +6,19 @@
 //! to [`LEAF`] items, depth at most [`MAX_DEPTH`]; `build.rs`), or by
 //! obvhs's PLOC builder under the `ploc` feature (`ploc.rs`), then
 //! collapsed into a 4-wide tree whose nodes hold up to four children's
-//! boxes side by side (`wide.rs`). A box is the exact minimum and maximum
-//! of its items' boxes: no rounding. The slab test, run on a node's four
-//! children at once, is widened by a derived bound so that it never culls
-//! a box that the ray's exact segment meets (`traverse.rs`), and a query
-//! walks with a fixed stack of `3 * MAX_DEPTH` entries: no query
-//! allocates.
+//! boxes side by side (`wide.rs`). The builders' boxes are the exact
+//! minimum and maximum of their items' boxes; the wide nodes store them
+//! rounded outward to `f32`, relative to a centre and a power-of-two
+//! scale of the hierarchy's own (`frame.rs`), so that they keep `f32`'s
+//! precision for the mesh's size wherever it lies and at every scale. The
+//! slab test, run on a node's four children at once in `f32`, is widened
+//! by a derived bound that also covers the rounding of the ray into the
+//! frame, so that it never culls a box that the ray's exact segment
+//! meets (`traverse.rs`), and a query walks with a fixed stack of `3 *
+//! MAX_DEPTH` entries: no query allocates.
 
 mod build;
+mod frame;
 #[cfg(feature = "ploc")]
 mod ploc;
 mod traverse;
@@ -22,13 +27,14 @@ mod wide;
 pub(crate) use build::Item;
 #[cfg(feature = "ploc")]
 pub use ploc::PlocQuality;
-pub(crate) use traverse::{BoxRay, Visitor, walk};
+pub(crate) use traverse::{Visitor, walk};
 #[cfg(test)]
 pub(crate) use wide::WIDTH;
 pub(crate) use wide::WideNode;
 
 use alloc::vec::Vec;
 use core::mem::size_of;
+use frame::Frame;
 use glam::DVec3;
 use wide::collapse;
 
@@ -114,20 +120,31 @@ pub(crate) struct BinaryBvh {
 }
 
 /// The hierarchy the queries walk: the builder's tree collapsed into 4-wide
-/// nodes (`wide.rs`), the root first, and the item indices in leaf order
-/// (the binary tree's, unchanged).
+/// nodes (`wide.rs`) whose boxes are rounded outward to `f32` in the
+/// hierarchy's frame (`frame.rs`), the root first, the item indices in
+/// leaf order (the binary tree's, unchanged), and the exact box of every
+/// item.
 #[derive(Clone, Debug)]
 pub(crate) struct BoxBvh {
     pub(crate) nodes: Vec<WideNode>,
     pub(crate) order: Vec<u32>,
+    pub(crate) frame: Frame,
+    bounds: Option<(DVec3, DVec3)>,
 }
 
 impl From<BinaryBvh> for BoxBvh {
     /// The collapse runs after either builder.
     fn from(binary: BinaryBvh) -> BoxBvh {
+        let bounds = binary
+            .nodes
+            .first()
+            .map(|n| (DVec3::from(n.min), DVec3::from(n.max)));
+        let frame = bounds.map_or(Frame::EMPTY, |(lo, hi)| Frame::of(lo, hi));
         BoxBvh {
-            nodes: collapse(&binary),
+            nodes: collapse(&binary, &frame),
             order: binary.order,
+            frame,
+            bounds,
         }
     }
 }
@@ -137,6 +154,8 @@ impl BoxBvh {
     pub(crate) const EMPTY: BoxBvh = BoxBvh {
         nodes: Vec::new(),
         order: Vec::new(),
+        frame: Frame::EMPTY,
+        bounds: None,
     };
 
     /// The hierarchy over `items` (possibly none), built by `builder`.
@@ -154,7 +173,7 @@ impl BoxBvh {
     /// The exact box of every item in the hierarchy, `None` when it holds
     /// none.
     pub(crate) fn bounds(&self) -> Option<(DVec3, DVec3)> {
-        self.nodes.first().map(WideNode::bounds)
+        self.bounds
     }
 
     /// The bytes its nodes and leaf order take.

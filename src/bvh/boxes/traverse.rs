@@ -2,7 +2,18 @@
 //! exact segment meets, run on the four children of a wide node at once,
 //! and the stack walk every query shares.
 //!
-//! # The slab test
+//! A node's boxes are `f32` bounds in the hierarchy's frame (`frame.rs`),
+//! each below (`min`) or above (`max`) the exact bound it stands for. The
+//! walk tests them in `f32` in that frame (the frame test below) for every
+//! ray whose frame values stay in a range where nothing overflows, and
+//! otherwise in `f64` in world coordinates, the bounds taken back out of
+//! the frame outward (the world test): a ray far outside the hierarchy's
+//! box, relative to its size, or with a direction coordinate below
+//! `2^-48` of its largest (but not zero). Either test keeps every box
+//! whose exact segment meets the exact box it stands for, hence every box
+//! the exact segment meets of the items below it.
+//!
+//! # The world test
 //! For axis `k` the ray `o + t d` is inside the slab `[b_lo, b_hi]` for
 //! `t` between `(b_lo - o_k) / d_k` and `(b_hi - o_k) / d_k`. Each is
 //! computed as `fl(fl(b - o_k) * fl(1 / d_k))`: three roundings, so the
@@ -13,7 +24,9 @@
 //! overflows), every slab of the ray is computed as `fl(fl(b - o_k) /
 //! d_k)` instead: two roundings, inside the same bound.
 //!
-//! The entry `t_near = max(range.min, lo_x, lo_y, lo_z)` and exit `t_far =
+//! Here the bounds `b` are the node's, taken back into world coordinates
+//! outward (`Frame::world_down`, `Frame::world_up`): below and above the
+//! exact ones. The entry `t_near = max(range.min, lo_x, lo_y, lo_z)` and exit `t_far =
 //! min(range.max, hi_x, hi_y, hi_z)` are then widened, `t_near -
 //! (W |t_near| + S)` and `t_far + (W |t_far| + S)`, and the box is kept
 //! when the first is at most the second. `x - c |x|` is increasing in `x`
@@ -46,10 +59,51 @@
 //! slab, or an entry beyond `f64::MAX`, where no hit is admitted) culls:
 //! its widened entry is `inf - inf = NaN`, which fails the comparison.
 //!
+//! # The frame test
+//! The ray is written in the frame: a point `x` is `x' = (x - c) 2^e`,
+//! so the ray is `o' + t d 2^e = o' + tau D` with `D = d 2^s` (`s` the
+//! power of two bringing `d`'s largest coordinate into `[1/2, 1)`, so `D`
+//! is exact where the test runs) and `tau = t 2^p`, `p = e - s`: the exact slabs in `tau` are
+//! those in `t` scaled by the power of two `2^p`, and a range `[t_0,
+//! t_1]` is `[t_0 2^p, t_1 2^p]`, rounded outward to `f32`
+//! ([`frame::down`], [`frame::up`], which bracket the exactly scaled
+//! value). The origin's frame coordinate `o'_k` is bracketed the same way,
+//! `lo_k < o'_k < hi_k` in `f32` (`frame.rs`), and Ize's argument is
+//! extended to that rounding by choosing the side per bound rather than
+//! padding: the slab's entry for a direction of clear sign bit is `(b -
+//! o'_k) / D_k` at its lower bound `b`, and `(b - hi_k) / D_k` is below it
+//! (`hi_k > o'_k`, `D_k >= 0`); its exit, at its upper bound, is computed
+//! from `lo_k` and is above the exact one; for a set sign bit the sides
+//! swap with the bounds. A zero `D_k` gives `±inf` and, where `b` equals
+//! the chosen origin bound, NaN, which is dropped as in the world test; as
+//! `lo_k < o'_k < hi_k` strictly, an origin inside the slab gives an
+//! entry of `-inf` and an exit of `+inf` or NaN: kept.
+//!
+//! What remains is the arithmetic on those values:
+//! `fl(fl(b - o) * fl32(fl64(1 / D_k)))`, four roundings, each within
+//! `u = 2^-24` relative (the `f64` division within `2^-53`), so the
+//! computed `tau'` is `tau (1 + θ)` with `|θ| <= gamma(4)`, and `|tau -
+//! tau'| <= gamma(5) |tau'|`, plus at most `2^-150` where the product
+//! underflows (a difference that underflows is exact). The entry and exit
+//! are then widened as in the world test, `W = gamma(9 + E)`, for the
+//! five, the widening's own three roundings, and the certified parameters
+//! a closest-hit query compares (within `4 * 2^-53` of the exact ones, less
+//! than one more `u`); it is stored as `(10 + E) 2^-24`, at least
+//! `gamma(9 + E)` (`n u / (1 - n u) <= (n + 1) u` when `n (n + 1) u <= 1`),
+//! and `S = 2^-126` covers the underflows.
+//!
+//! The frame test runs only where nothing overflows and `D` is exact:
+//! `|o'_k| <= 2^48` (infinite where `o_k - c_k` overflowed: then it does
+//! not run), every `D_k` zero or at least `2^-48` in magnitude, and `|p|
+//! <= 2046` (the range's scaling, `scale_pow2`). The box bounds lie within
+//! `[-2, 2]`, so `|b - o| < 2^49` and `|1 / D_k| <= 2^48`: every slab
+//! parameter is below `2^97`, far from `f32::MAX`.
+//!
 //! # Four lanes
 //! A wide node (`wide.rs`) holds its children's boxes side by side, and
-//! the walk tests them in one pass: the test above, lane by lane, on
-//! `[f64; 4]` rows (two SSE2 registers each). Every lane computes the same
+//! the walk tests them in one pass: the tests above, lane by lane, on
+//! `[f32; 4]` rows (one SSE register each; the world test's `[f64; 4]`
+//! rows, the bounds taken out of the frame first, two). Every lane computes the same
 //! operations on the same operands in the same order as the one-box test
 //! (`fl(fl(b - o_k) * inv_k)` or `fl(fl(b - o_k) / d_k)`, the same
 //! comparison-and-select for the entry and exit, the same widening), and
@@ -63,7 +117,8 @@
 //! # Culling again on the way back
 //! A child is pushed with its widened entry `e`; when it is popped, after
 //! leaves may have lowered the visitor's bound from `M` to `M'`, it is
-//! dropped if `e > M' + (W |M'| + S)`. That is the test above with the
+//! dropped if `e > M' + (W |M'| + S)` (in the frame test, `M'` rounded up
+//! into the frame's parameter). That is the test above with the
 //! box's own exits left out of the minimum: `e` is unchanged (the entry
 //! does not depend on the range's end), and the widened `M'` is above
 //! every parameter the query still admits (the range's bound is widened
@@ -89,18 +144,43 @@
     reason = "the walk's stack is left uninitialized, each slot read only after it is written"
 )]
 
+use super::frame::{self, Frame};
 use super::wide::{WIDTH, WideNode};
 use super::{BoxBvh, MAX_DEPTH};
+use crate::arith::exponent::{pow2, scale_pow2, unit_scale};
 use crate::arith::roundoff::gamma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
 use core::mem::MaybeUninit;
 use glam::DVec3;
 
-/// The absolute widening `S` of the module docs, `2^-1070`.
+/// The absolute widening `S` of the world test, `2^-1070`.
 const SLACK: f64 = f64::from_bits(1 << 4);
 
-/// A ray prepared for the slab test; `E` more roundings of each slab
+/// The absolute widening `S` of the frame test, `2^-126`.
+const SLACK_32: f32 = f32::MIN_POSITIVE;
+
+/// The frame test's limit on the origin's frame coordinates and on the
+/// reciprocals of the scaled direction, `2^48` (see the module docs).
+const FRAME_LIMIT: f64 = pow2(48);
+
+/// What a slab test gives the walk: per lane the widened entry and the
+/// mask of lanes kept, in its own parameter.
+trait Slabs {
+    /// The parameter the test computes in: `f32` in the frame, `f64` in
+    /// world coordinates.
+    type T: Copy + PartialOrd;
+    /// A bound of the query's range as the test's parameter, rounded down
+    /// (`up` false) or up, so that it brackets the exact one.
+    fn param(&self, t: f64, up: bool) -> Self::T;
+    /// The lanes of `node` whose boxes the exact segment `[min, max]` may
+    /// meet (bit `l` of the mask), and per lane the widened entry.
+    fn lanes(&self, node: &WideNode, min: Self::T, max: Self::T) -> ([Self::T; WIDTH], u32);
+    /// An exit widened upward, `x + (W |x| + S)`.
+    fn widen_up(&self, x: Self::T) -> Self::T;
+}
+
+/// A ray prepared for the world test; `E` more roundings of each slab
 /// parameter covered (1 for a segment's exact end, see
 /// `TriangleMesh::occluded_between_with`).
 #[derive(Clone, Copy, Debug)]
@@ -115,12 +195,12 @@ pub(crate) struct BoxRay<const E: u32 = 0> {
 }
 
 impl<const E: u32> BoxRay<E> {
-    /// The relative widening `W` of the module docs, `gamma(7 + E)`: `E`
+    /// The relative widening `W` of the world test, `gamma(7 + E)`: `E`
     /// more roundings of the slab parameters (each relative `u`, so
     /// `|t - t'| <= gamma(4 + E) |t'|`) and the widening's own three.
     const WIDEN: f64 = gamma(7 + E);
 
-    pub(crate) fn of(ray: &Ray) -> BoxRay<E> {
+    fn of(ray: &Ray) -> BoxRay<E> {
         let d = ray.direction();
         let inv = DVec3::ONE / d;
         let divide = (0..3).any(|k| d[k] != 0.0 && !inv[k].is_normal());
@@ -143,30 +223,31 @@ impl<const E: u32> BoxRay<E> {
         x + (Self::WIDEN * x.abs() + SLACK)
     }
 
-    /// The lanes of `node` whose boxes the exact segment `[min, max]` of
-    /// the ray may meet (bit `l` of the mask; always set when it does, see
-    /// the module docs), and per lane the widened entry parameter `t_near
-    /// - (W |t_near| + S)`. `DIVIDE` is `self.divide`, taken once per walk
-    /// rather than once per axis and node. Straight-line lane-wise
-    /// operations on fixed-size arrays, which the compiler turns into
-    /// vector subtractions, products, `maxpd`, `minpd` and comparisons.
+    /// The world test on the boxes `[min[k][l], max[k][l]]` (world
+    /// coordinates, `min` below and `max` above the exact bounds): the
+    /// lanes whose boxes the exact segment `[tmin, tmax]` of the ray may
+    /// meet, and per lane the widened entry `t_near - (W |t_near| + S)`.
+    /// `DIVIDE` is `self.divide`, taken once per walk rather than once per
+    /// axis and node. Straight-line lane-wise operations on fixed-size
+    /// arrays, which the compiler turns into vector subtractions,
+    /// products, `maxpd`, `minpd` and comparisons.
     #[inline(always)]
-    fn lanes<const DIVIDE: bool>(
+    fn world_lanes<const DIVIDE: bool>(
         &self,
-        node: &WideNode,
-        min: f64,
-        max: f64,
+        min: &[[f64; WIDTH]; 3],
+        max: &[[f64; WIDTH]; 3],
+        tmin: f64,
+        tmax: f64,
     ) -> ([f64; WIDTH], u32) {
-        let mut near = [min; WIDTH];
-        let mut far = [max; WIDTH];
+        let mut near = [tmin; WIDTH];
+        let mut far = [tmax; WIDTH];
         for k in 0..3 {
             // The slab's entry is at the box's `min` for a direction of
-            // clear sign bit and at its `max` otherwise (`-0.0` too): the
-            // bounds swap as `(tb, ta)` did in the binary walk.
+            // clear sign bit and at its `max` otherwise (`-0.0` too).
             let (enter, exit) = if self.negative[k] {
-                (&node.max[k], &node.min[k])
+                (&max[k], &min[k])
             } else {
-                (&node.min[k], &node.max[k])
+                (&min[k], &max[k])
             };
             let o = self.origin[k];
             let (d, inv) = (self.direction[k], self.inv[k]);
@@ -192,17 +273,132 @@ impl<const E: u32> BoxRay<E> {
         }
         (lower, mask)
     }
+}
 
-    /// Whether the exact segment `[min, max]` of the ray may meet lane `l`
-    /// of `node` (never `false` when it does; see the module docs).
-    #[cfg(test)]
-    pub(super) fn meets(&self, node: &WideNode, l: usize, min: f64, max: f64) -> bool {
-        let (_, mask) = if self.divide {
-            self.lanes::<true>(node, min, max)
-        } else {
-            self.lanes::<false>(node, min, max)
+/// The world test over a hierarchy's nodes: the ray and the frame its
+/// boxes are taken out of.
+struct World<'a, const E: u32, const DIVIDE: bool> {
+    ray: BoxRay<E>,
+    frame: &'a Frame,
+}
+
+impl<const E: u32, const DIVIDE: bool> Slabs for World<'_, E, DIVIDE> {
+    type T = f64;
+
+    #[inline(always)]
+    fn param(&self, t: f64, _up: bool) -> f64 {
+        t
+    }
+
+    #[inline(always)]
+    fn lanes(&self, node: &WideNode, min: f64, max: f64) -> ([f64; WIDTH], u32) {
+        let f = self.frame;
+        let lo =
+            core::array::from_fn(|k| core::array::from_fn(|l| f.world_down(node.min[k][l], k)));
+        let hi = core::array::from_fn(|k| core::array::from_fn(|l| f.world_up(node.max[k][l], k)));
+        self.ray.world_lanes::<DIVIDE>(&lo, &hi, min, max)
+    }
+
+    #[inline(always)]
+    fn widen_up(&self, x: f64) -> f64 {
+        BoxRay::<E>::widen_up(x)
+    }
+}
+
+/// A ray prepared for the frame test (see the module docs); `E` as for
+/// [`BoxRay`].
+#[derive(Clone, Copy, Debug)]
+struct FrameRay<const E: u32> {
+    /// Per axis, the origin bound the entry is computed from (`hi_k` for
+    /// a clear sign bit, `lo_k` for a set one) and the one the exit is.
+    enter: [f32; 3],
+    exit: [f32; 3],
+    /// Per axis, `fl32(fl64(1 / D_k))`, `±inf` for a zero `D_k`.
+    inv: [f32; 3],
+    /// Per axis, whether the direction's sign bit is set.
+    negative: [bool; 3],
+    /// The power of two `p` of `tau = t 2^p`.
+    p: i32,
+}
+
+impl<const E: u32> FrameRay<E> {
+    /// The relative widening `W` of the frame test, `(10 + E) 2^-24 >=
+    /// gamma(9 + E)` in `f32` (see the module docs).
+    const WIDEN: f32 = (10 + E) as f32 * (f32::EPSILON / 2.0);
+
+    /// The ray in `frame`, or `None` where the frame test does not run
+    /// (see the module docs).
+    #[inline(always)]
+    fn of(ray: &Ray, frame: &Frame) -> Option<FrameRay<E>> {
+        let d = ray.direction();
+        let s = unit_scale(&[d.x, d.y, d.z]);
+        let p = frame.exp - s;
+        if p.abs() > 2046 {
+            return None;
+        }
+        let mut r = FrameRay {
+            enter: [0.0; 3],
+            exit: [0.0; 3],
+            inv: [0.0; 3],
+            negative: [false; 3],
+            p,
         };
-        mask & (1 << l) != 0
+        for k in 0..3 {
+            let dk = scale_pow2(d[k], s);
+            let x = frame.coordinate(ray.origin()[k], k);
+            let small = dk != 0.0 && dk.abs() * FRAME_LIMIT < 1.0;
+            if small || x.abs() > FRAME_LIMIT || x.is_nan() {
+                return None;
+            }
+            let (lo, hi) = (frame::down(x), frame::up(x));
+            r.negative[k] = dk.is_sign_negative();
+            (r.enter[k], r.exit[k]) = if r.negative[k] { (lo, hi) } else { (hi, lo) };
+            r.inv[k] = (1.0 / dk) as f32;
+        }
+        Some(r)
+    }
+}
+
+impl<const E: u32> Slabs for FrameRay<E> {
+    type T = f32;
+
+    #[inline(always)]
+    fn param(&self, t: f64, up: bool) -> f32 {
+        let tau = scale_pow2(t, self.p);
+        if up { frame::up(tau) } else { frame::down(tau) }
+    }
+
+    /// The frame test on the lanes of `node`: the same straight-line
+    /// lane-wise operations as the world test, on `f32` rows.
+    #[inline(always)]
+    fn lanes(&self, node: &WideNode, min: f32, max: f32) -> ([f32; WIDTH], u32) {
+        let mut near = [min; WIDTH];
+        let mut far = [max; WIDTH];
+        for k in 0..3 {
+            let (enter, exit) = if self.negative[k] {
+                (&node.max[k], &node.min[k])
+            } else {
+                (&node.min[k], &node.max[k])
+            };
+            let (oe, ox, inv) = (self.enter[k], self.exit[k], self.inv[k]);
+            let lo: [f32; WIDTH] = core::array::from_fn(|l| (enter[l] - oe) * inv);
+            let hi: [f32; WIDTH] = core::array::from_fn(|l| (exit[l] - ox) * inv);
+            near = core::array::from_fn(|l| if lo[l] > near[l] { lo[l] } else { near[l] });
+            far = core::array::from_fn(|l| if hi[l] < far[l] { hi[l] } else { far[l] });
+        }
+        let lower: [f32; WIDTH] =
+            core::array::from_fn(|l| near[l] - (Self::WIDEN * near[l].abs() + SLACK_32));
+        let upper: [f32; WIDTH] = core::array::from_fn(|l| self.widen_up(far[l]));
+        let mut mask = 0;
+        for l in 0..WIDTH {
+            mask |= u32::from(lower[l] <= upper[l]) << l;
+        }
+        (lower, mask)
+    }
+
+    #[inline(always)]
+    fn widen_up(&self, x: f32) -> f32 {
+        x + (Self::WIDEN * x.abs() + SLACK_32)
     }
 }
 
@@ -215,7 +411,8 @@ pub(crate) trait Visitor {
     /// walk neither sorts nor culls on the way back.
     const ORDERED: bool = true;
     /// The current upper bound of the parameters still wanted (constant
-    /// for a visitor that is not [`Visitor::ORDERED`]).
+    /// for a visitor that is not [`Visitor::ORDERED`]; it changes only in
+    /// [`Visitor::leaf`]).
     fn max(&self) -> f64;
     /// Looks at a leaf's items `order[start .. start + count]` (a mesh's
     /// triangles, a scene's primitives); `true` stops the walk.
@@ -229,8 +426,8 @@ pub(crate) trait Visitor {
 /// A child the walk will come back to: its widened entry and its lane's
 /// `link` and `count`.
 #[derive(Clone, Copy)]
-struct Pending {
-    entry: f64,
+struct Pending<T> {
+    entry: T,
     link: u32,
     count: u32,
 }
@@ -239,47 +436,46 @@ struct Pending {
 /// module docs).
 const STACK: usize = 3 * MAX_DEPTH;
 
-/// Walks every leaf whose box the ray's exact segment `[range.min,
-/// visitor.max()]` meets, a node's children of smaller entry first for an
-/// [ordered](Visitor::ORDERED) visitor, in lane order otherwise. The
-/// stack holds up to three pending children per wide level: `3 *
-/// MAX_DEPTH` entries, which the builders' depth bound never exceeds (see
-/// the module docs).
+/// Walks every leaf whose box the exact segment `[range.min,
+/// visitor.max()]` of `ray` meets, a node's children of smaller entry
+/// first for an [ordered](Visitor::ORDERED) visitor, in lane order
+/// otherwise; `E` more roundings of the slab parameters covered (1 for a
+/// segment's exact end). The stack holds up to three pending children per
+/// wide level: `3 * MAX_DEPTH` entries, which the builders' depth bound
+/// never exceeds (see the module docs).
 #[inline(always)]
-pub(crate) fn walk<V: Visitor, const E: u32>(
-    bvh: &BoxBvh,
-    ray: &BoxRay<E>,
-    range: Interval,
-    v: &mut V,
-) {
-    if ray.divide {
-        walk_in::<V, E, true>(bvh, ray, range, v);
-    } else {
-        walk_in::<V, E, false>(bvh, ray, range, v);
-    }
-}
-
-/// [`walk`], with `DIVIDE` the ray's `divide`.
-fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
-    bvh: &BoxBvh,
-    ray: &BoxRay<E>,
-    range: Interval,
-    v: &mut V,
-) {
+pub(crate) fn walk<V: Visitor, const E: u32>(bvh: &BoxBvh, ray: &Ray, range: Interval, v: &mut V) {
     if bvh.nodes.is_empty() {
         return;
     }
-    let lo = range.min();
-    // Left uninitialized: zeroing its 3 KiB took nearly a third of a short
+    if let Some(r) = FrameRay::<E>::of(ray, &bvh.frame) {
+        return walk_in(bvh, &r, range, v);
+    }
+    let r = BoxRay::<E>::of(ray);
+    let frame = &bvh.frame;
+    if r.divide {
+        walk_in(bvh, &World::<E, true> { ray: r, frame }, range, v);
+    } else {
+        walk_in(bvh, &World::<E, false> { ray: r, frame }, range, v);
+    }
+}
+
+/// [`walk`] with the slab test `slabs`.
+fn walk_in<V: Visitor, S: Slabs>(bvh: &BoxBvh, slabs: &S, range: Interval, v: &mut V) {
+    let lo = slabs.param(range.min(), false);
+    // The visitor's bound as the test's parameter, rounded up; it changes
+    // only when a leaf is visited.
+    let mut hi = slabs.param(v.max(), true);
+    // Left uninitialized: zeroing it took nearly a third of a short
     // query's time (a terrain's primary rays: 53 ns against 37 in the
     // report's closest_hit), and a slot is read only after it is written.
-    let mut stack = [const { MaybeUninit::<Pending>::uninit() }; STACK];
+    let mut stack = [const { MaybeUninit::<Pending<S::T>>::uninit() }; STACK];
     let mut top = 0;
     let mut at = 0usize;
     loop {
         v.node();
         let node = &bvh.nodes[at];
-        let (lower, mut mask) = ray.lanes::<DIVIDE>(node, lo, v.max());
+        let (lower, mut mask) = slabs.lanes(node, lo, hi);
         // One internal child kept (the common case near the leaves of a
         // coherent ray): straight to it, without the stack's round trip
         // (its pop test would compare against the same bound).
@@ -290,12 +486,40 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
                 continue;
             }
         }
-        if !V::ORDERED {
+        if V::ORDERED {
+            // The lanes kept, sorted by entry, farthest first: pushed in
+            // that order, the nearest is popped first.
+            let mut kept = [(lower[0], 0usize); WIDTH];
+            let mut n = 0;
+            while mask != 0 {
+                let l = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                let x = (lower[l], l);
+                let mut j = n;
+                while j > 0 && kept[j - 1].0 < x.0 {
+                    kept[j] = kept[j - 1];
+                    j -= 1;
+                }
+                kept[j] = x;
+                n += 1;
+            }
+            for &(entry, l) in &kept[..n] {
+                // At most three entries per wide level stay on the stack
+                // and the wide tree is shallower than MAX_DEPTH, so a slot
+                // is always free (see the module docs).
+                stack[top] = MaybeUninit::new(Pending {
+                    entry,
+                    link: node.link[l],
+                    count: node.count[l],
+                });
+                top += 1;
+            }
+        } else {
             // Any hit: the lanes kept in lane order, no sorting.
             while mask != 0 {
                 let l = mask.trailing_zeros() as usize;
                 mask &= mask - 1;
-                // A slot is free, as below (see the module docs).
+                // A slot is free, as above.
                 stack[top] = MaybeUninit::new(Pending {
                     entry: lower[l],
                     link: node.link[l],
@@ -303,33 +527,6 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
                 });
                 top += 1;
             }
-        }
-        // The lanes kept, sorted by entry, farthest first: pushed in that
-        // order, the nearest is popped first.
-        let mut kept = [(0.0, 0usize); WIDTH];
-        let mut n = 0;
-        while V::ORDERED && mask != 0 {
-            let l = mask.trailing_zeros() as usize;
-            mask &= mask - 1;
-            let x = (lower[l], l);
-            let mut j = n;
-            while j > 0 && kept[j - 1].0 < x.0 {
-                kept[j] = kept[j - 1];
-                j -= 1;
-            }
-            kept[j] = x;
-            n += 1;
-        }
-        for &(entry, l) in &kept[..n] {
-            // At most three entries per wide level stay on the stack and
-            // the wide tree is shallower than MAX_DEPTH, so a slot is
-            // always free (see the module docs).
-            stack[top] = MaybeUninit::new(Pending {
-                entry,
-                link: node.link[l],
-                count: node.count[l],
-            });
-            top += 1;
         }
         at = loop {
             if top == 0 {
@@ -342,7 +539,7 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
             let p = unsafe { stack[top].assume_init() };
             // Culled again when the range has shrunk below its entry since
             // it was pushed (see the module docs).
-            if V::ORDERED && p.entry > BoxRay::<E>::widen_up(v.max()) {
+            if V::ORDERED && p.entry > slabs.widen_up(hi) {
                 continue;
             }
             if p.count == 0 {
@@ -353,6 +550,9 @@ fn walk_in<V: Visitor, const E: u32, const DIVIDE: bool>(
             let items = bvh.order.get(start..start + p.count as usize);
             if v.leaf(items.unwrap_or(&[])) {
                 return;
+            }
+            if V::ORDERED {
+                hi = slabs.param(v.max(), true);
             }
         };
     }
@@ -365,8 +565,8 @@ mod tests {
     use alloc::vec::Vec;
 
     /// A wide node with `[min, max]` in lane `at` and every other lane
-    /// empty.
-    fn node(at: usize, min: [f64; 3], max: [f64; 3]) -> WideNode {
+    /// empty, in the identity frame (`f32` bounds equal to the world's).
+    fn node(at: usize, min: [f32; 3], max: [f32; 3]) -> WideNode {
         let mut n = WideNode::EMPTY;
         for k in 0..3 {
             n.min[k][at] = min[k];
@@ -374,6 +574,58 @@ mod tests {
         }
         n.count[at] = 1;
         n
+    }
+
+    const IDENTITY: Frame = Frame {
+        centre: DVec3::ZERO,
+        exp: 0,
+    };
+
+    /// Whether the frame test (`None` where it does not run) and the world
+    /// test keep lane `l` of `node` for the segment `[min, max]` of the
+    /// ray `o + t d`.
+    fn tests<const E: u32>(
+        o: [f64; 3],
+        d: [f64; 3],
+        node: &WideNode,
+        l: usize,
+        min: f64,
+        max: f64,
+    ) -> (Option<bool>, bool) {
+        let ray = Ray::new(o, d).unwrap();
+        let fast = FrameRay::<E>::of(&ray, &IDENTITY)
+            .map(|r| r.lanes(node, r.param(min, false), r.param(max, true)).1 & (1 << l) != 0);
+        let r = BoxRay::<E>::of(&ray);
+        let world = if r.divide {
+            World::<E, true> {
+                ray: r,
+                frame: &IDENTITY,
+            }
+            .lanes(node, min, max)
+        } else {
+            World::<E, false> {
+                ray: r,
+                frame: &IDENTITY,
+            }
+            .lanes(node, min, max)
+        };
+        (fast, world.1 & (1 << l) != 0)
+    }
+
+    /// Whether both tests keep lane `l` (the frame test where it runs),
+    /// and whether both cull it.
+    fn kept_culled<const E: u32>(
+        o: [f64; 3],
+        d: [f64; 3],
+        n: &WideNode,
+        l: usize,
+        (min, max): (f64, f64),
+    ) -> (bool, bool) {
+        let (fast, world) = tests::<E>(o, d, n, l, min, max);
+        (
+            fast.unwrap_or(true) && world,
+            !fast.unwrap_or(false) && !world,
+        )
     }
 
     /// Rays that touch the box only on a face, an edge or a corner, with
@@ -405,7 +657,7 @@ mod tests {
             ([0.5, 0.5, 0.5], [-1.0, 0.0, -0.0]),
         ];
         let culls = [
-            ([1.0 + 1e-9, 0.5, -1.0], [0.0, 0.0, 1.0], f64::INFINITY),
+            ([1.0 + 1e-6, 0.5, -1.0], [0.0, 0.0, 1.0], f64::INFINITY),
             ([0.5, 0.5, -1.0], [0.0, 0.0, -1.0], f64::INFINITY),
             ([0.5, 0.5, -1.0], [0.0, 0.0, 1.0], 0.5),
             ([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0], 0.99),
@@ -414,45 +666,68 @@ mod tests {
             let unit = node(at, [0.0; 3], [1.0; 3]);
             let others = (0..WIDTH).filter(|&l| l != at);
             for (o, d) in keeps {
-                let ray = BoxRay::<0>::of(&Ray::new(o, d).unwrap());
-                assert!(ray.meets(&unit, at, 0.0, f64::INFINITY), "{o:?} {d:?}");
-                let segment = BoxRay::<1>::of(&Ray::new(o, d).unwrap());
-                assert!(segment.meets(&unit, at, 0.0, f64::INFINITY), "{o:?} {d:?}");
+                assert!(
+                    kept_culled::<0>(o, d, &unit, at, (0.0, f64::INFINITY)).0,
+                    "{o:?} {d:?}"
+                );
+                assert!(
+                    kept_culled::<1>(o, d, &unit, at, (0.0, f64::INFINITY)).0,
+                    "{o:?} {d:?}"
+                );
                 for (min, max) in [(0.0, f64::INFINITY), (f64::NEG_INFINITY, f64::INFINITY)] {
                     for l in others.clone() {
-                        assert!(!ray.meets(&unit, l, min, max), "{o:?} {d:?} lane {l}");
-                        assert!(!segment.meets(&unit, l, min, max), "{o:?} {d:?} lane {l}");
+                        assert!(
+                            kept_culled::<0>(o, d, &unit, l, (min, max)).1,
+                            "{o:?} {d:?} lane {l}"
+                        );
+                        assert!(
+                            kept_culled::<1>(o, d, &unit, l, (min, max)).1,
+                            "{o:?} {d:?} lane {l}"
+                        );
                     }
                 }
             }
             for (o, d, max) in culls {
-                let ray = BoxRay::<0>::of(&Ray::new(o, d).unwrap());
-                assert!(!ray.meets(&unit, at, 0.0, max), "{o:?} {d:?}");
+                assert!(
+                    kept_culled::<0>(o, d, &unit, at, (0.0, max)).1,
+                    "{o:?} {d:?}"
+                );
             }
             // The touching corner ray with its range ending exactly at t = 1.
-            let corner = BoxRay::<0>::of(&Ray::new([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0]).unwrap());
-            assert!(corner.meets(&unit, at, 0.0, 1.0));
+            assert!(kept_culled::<0>([2.0, 2.0, 0.0], [-1.0, -1.0, 1.0], &unit, at, (0.0, 1.0)).0);
         }
         // Every lane of a node of four touching boxes at once.
         let mut four = WideNode::EMPTY;
         for l in 0..WIDTH {
             for k in 0..3 {
-                four.min[k][l] = l as f64;
-                four.max[k][l] = l as f64 + 1.0;
+                four.min[k][l] = l as f32;
+                four.max[k][l] = l as f32 + 1.0;
             }
         }
         // Along the diagonal, through each box's corners.
-        let diagonal = BoxRay::<0>::of(&Ray::new([0.0; 3], [1.0; 3]).unwrap());
-        let (lower, mask) = diagonal.lanes::<false>(&four, 0.0, f64::INFINITY);
+        let diagonal = Ray::new([0.0; 3], [1.0; 3]).unwrap();
+        let r = FrameRay::<0>::of(&diagonal, &IDENTITY).unwrap();
+        let (lower, mask) = r.lanes(&four, 0.0, f32::INFINITY);
         assert_eq!(mask, 0b1111);
         for (l, &entry) in lower.iter().enumerate() {
-            assert!(diagonal.meets(&four, l, 0.0, f64::INFINITY), "lane {l}");
-            assert!(entry <= l as f64, "lane {l}");
+            assert!(
+                kept_culled::<0>([0.0; 3], [1.0; 3], &four, l, (0.0, f64::INFINITY)).0,
+                "lane {l}"
+            );
+            // `tau = t 2^p`: the direction `(1, 1, 1)` scaled by 2^-1.
+            assert!(entry <= 2.0 * l as f32, "lane {l}");
         }
         // Which path each direction takes.
         let divides = |d: [f64; 3]| BoxRay::<0>::of(&Ray::new([0.0; 3], d).unwrap()).divide;
         assert!(divides([0.0, -tiny, 1.0]) && divides([huge, 0.0, 0.0]));
         assert!(!divides([0.0, -0.0, 1.0]) && !divides([-1.0, 2.0, 1e300]));
+        let framed = |o: [f64; 3], d: [f64; 3]| {
+            FrameRay::<0>::of(&Ray::new(o, d).unwrap(), &IDENTITY).is_some()
+        };
+        assert!(
+            framed([0.0; 3], [0.0, -0.0, 1.0]) && framed([1e14, 0.0, 0.0], [huge, 0.0, 1e-300])
+        );
+        assert!(!framed([0.0; 3], [1e-15, 0.0, 1.0]) && !framed([1e15, 0.0, 0.0], [0.0, 0.0, 1.0]));
     }
 
     /// A small deterministic generator (xorshift64*).
@@ -554,11 +829,14 @@ mod tests {
         let s = crate::arith::exponent::scale_pow2(1.0, k);
         let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
         let mut vertices = Vec::new();
+        let mut integers = Vec::new();
         let mut triangles = Vec::new();
         for k in 0..600u32 {
             let base = [rng.int(12), rng.int(12), rng.int(12)];
             for _ in 0..3 {
-                vertices.push([0, 1, 2].map(|i| (base[i] + rng.int(2)) as f64 * s));
+                let v = [0, 1, 2].map(|i| base[i] + rng.int(2));
+                vertices.push(v.map(|c| c as f64 * s));
+                integers.push(v.map(i128::from));
             }
             triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
         }
@@ -580,20 +858,46 @@ mod tests {
                 .collect();
             let bvh = &BoxBvh::build(items, builder);
             assert!(bvh.nodes.len() > 10);
+            // Each leaf lane with the exact box of its triangles, in
+            // integers: what its `f32` box stands for.
             let mut leaves = Vec::new();
             for n in &bvh.nodes {
                 for l in 0..WIDTH {
                     if n.count[l] > 0 {
-                        let lo = [0, 1, 2].map(|k| (n.min[k][l] / s) as i128);
-                        let hi = [0, 1, 2].map(|k| (n.max[k][l] / s) as i128);
-                        leaves.push((lo, hi, n.link[l] as usize, n.count[l] as usize));
+                        let (start, count) = (n.link[l] as usize, n.count[l] as usize);
+                        let (mut lo, mut hi) = ([i128::MAX; 3], [i128::MIN; 3]);
+                        for &t in &bvh.order[start..start + count] {
+                            for v in &integers[3 * t as usize..3 * t as usize + 3] {
+                                for k in 0..3 {
+                                    lo[k] = lo[k].min(v[k]);
+                                    hi[k] = hi[k].max(v[k]);
+                                }
+                            }
+                        }
+                        leaves.push((lo, hi, start, count));
                     }
                 }
             }
-            let mut kept = 0;
+            let (mut kept, mut world) = (0, 0);
             for i in 0..3000 {
-                let o = [rng.int(16), rng.int(16), rng.int(16)];
+                let mut o = [rng.int(16), rng.int(16), rng.int(16)];
                 let mut d = [rng.int(3), rng.int(3), rng.int(3)];
+                // (Scaled by 2^1000, 2^55 overflows: none such there.)
+                let far_rays = k <= 960;
+                if far_rays && i % 5 == 3 {
+                    // A direction coordinate 2^-55 of the largest: the
+                    // world test.
+                    d[0] = 1 << 55;
+                } else if far_rays && i % 5 == 4 {
+                    // From 2^54 away, towards a point by the mesh (a
+                    // multiple of 4, so that every coordinate of the
+                    // direction is an `f64`): the world test, through the
+                    // mesh at t near 1.
+                    o = [0, 1, 2].map(|_| 4 * rng.int(4));
+                    let far = [rng.int(1), rng.int(1), 1].map(|c| c << 54);
+                    d = [0, 1, 2].map(|k| o[k] - far[k]);
+                    o = far;
+                }
                 if d == [0; 3] {
                     d[2] = 1;
                 }
@@ -611,12 +915,13 @@ mod tests {
                     max: range.max(),
                     seen: Vec::new(),
                 };
-                walk(bvh, &BoxRay::<0>::of(&ray), range, &mut ours);
+                world += usize::from(FrameRay::<0>::of(&ray, &bvh.frame).is_none());
+                walk::<_, 0>(bvh, &ray, range, &mut ours);
                 let mut segment = Leaves {
                     max: range.max(),
                     seen: Vec::new(),
                 };
-                walk(bvh, &BoxRay::<1>::of(&ray), range, &mut segment);
+                walk::<_, 1>(bvh, &ray, range, &mut segment);
                 let (o, d) = (o.map(i128::from), d.map(i128::from));
                 for &(lo, hi, start, count) in &leaves {
                     if exact_meets(lo, hi, o, d, max.map(i128::from)) {
@@ -634,6 +939,11 @@ mod tests {
             assert!(
                 kept > 3000,
                 "{kept} leaves met: the rays miss too often to test"
+            );
+            // Both tests ran: two rays in five take the world test.
+            assert!(
+                (1000..1500).contains(&world) || k > 960,
+                "{world} world tests"
             );
         }
     }
