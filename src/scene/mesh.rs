@@ -231,7 +231,7 @@ impl TriangleMesh {
         }
     }
 
-    /// The bytes the hierarchy takes beside the mesh (the 4-wide nodes the
+    /// The bytes the hierarchy takes beside the mesh (the 8-wide nodes the
     /// queries walk and the leaf order; the builder's binary tree is not
     /// kept), for tests and reports.
     pub fn bvh_bytes(&self) -> usize {
@@ -413,7 +413,7 @@ fn certified_hit<T: TriangleTest>(
 /// The work one query did: see [`TriangleMesh::closest_hit_with_stats`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TraceStats {
-    /// Nodes of the hierarchy the walk looked at: a 4-wide node (its
+    /// Nodes of the hierarchy the walk looked at: an 8-wide node (its
     /// children's box tests, in one pass), or a leaf (its triangles).
     pub nodes_visited: u64,
     /// Triangles tested in the leaves reached.
@@ -684,9 +684,9 @@ mod tests {
         assert_eq!(one.bvh.nodes.len(), 1);
         assert_eq!(
             (one.bvh.nodes[0].count, one.bvh.nodes[0].link),
-            ([1, 0, 0, 0], [0; 4])
+            ([1, 0, 0, 0, 0, 0, 0, 0], [0; WIDTH])
         );
-        assert_eq!(one.bvh_bytes(), 128 + 4);
+        assert_eq!(one.bvh_bytes(), 256 + 4);
         let none = TriangleMesh::new(&vertices, &[[0, 0, 1]]).unwrap();
         assert!(none.bvh.nodes.is_empty() && none.bvh.bounds().is_none());
         let ray = Ray::new([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]).unwrap();

@@ -5,13 +5,13 @@
 //! Built once with a binned surface-area heuristic (12 bins, leaves of up
 //! to [`LEAF`] items, depth at most [`MAX_DEPTH`]; `build.rs`), or by
 //! obvhs's PLOC builder under the `ploc` feature (`ploc.rs`), then
-//! collapsed into a 4-wide tree whose nodes hold up to four children's
+//! collapsed into an 8-wide tree whose nodes hold up to eight children's
 //! boxes side by side (`wide.rs`). The builders' boxes are the exact
 //! minimum and maximum of their items' boxes; the wide nodes store them
 //! rounded outward to `f32`, relative to a centre and a power-of-two
 //! scale of the hierarchy's own (`frame.rs`), so that they keep `f32`'s
 //! precision for the mesh's size wherever it lies and at every scale. The
-//! slab test, run on a node's four children at once in `f32`, is widened
+//! slab test, run on a node's eight children at once in `f32`, is widened
 //! by a derived bound that also covers the rounding of the ray into the
 //! frame, so that it never culls a box that the ray's exact segment
 //! meets (`traverse.rs`), and a query walks with a fixed stack of `3 *
@@ -43,8 +43,8 @@ pub const LEAF: usize = 4;
 
 /// The deepest a leaf of the builders' binary trees lies below the root,
 /// plus one (the binned builder's bound is 63, see `build.rs`; the PLOC
-/// builder declines deeper trees): a query's stack holds `3 * MAX_DEPTH`
-/// entries, three pending children per level of the 4-wide tree walked
+/// builder declines deeper trees): a query's stack holds `7 * MAX_DEPTH`
+/// entries, seven pending children per level of the 8-wide tree walked
 /// (`traverse.rs`).
 pub const MAX_DEPTH: usize = 64;
 
@@ -52,7 +52,7 @@ pub const MAX_DEPTH: usize = 64;
 /// exact), and `count > 0` for a leaf holding the triangles `order[link ..
 /// link + count]`, or `count == 0` for an internal node whose first child
 /// is the next node (preorder) and whose second is `nodes[link]`. The
-/// queries walk it collapsed into 4-wide nodes (`wide.rs`).
+/// queries walk it collapsed into 8-wide nodes (`wide.rs`).
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 pub(crate) struct Node {
@@ -119,7 +119,7 @@ pub(crate) struct BinaryBvh {
     order: Vec<u32>,
 }
 
-/// The hierarchy the queries walk: the builder's tree collapsed into 4-wide
+/// The hierarchy the queries walk: the builder's tree collapsed into 8-wide
 /// nodes (`wide.rs`) whose boxes are rounded outward to `f32` in the
 /// hierarchy's frame (`frame.rs`), the root first, the item indices in
 /// leaf order (the binary tree's, unchanged), and the exact box of every

@@ -1,5 +1,5 @@
 //! The conservative walk: a slab test that never culls a box the ray's
-//! exact segment meets, run on the four children of a wide node at once,
+//! exact segment meets, run on the eight children of a wide node at once,
 //! and the stack walk every query shares.
 //!
 //! A node's boxes are `f32` bounds in the hierarchy's frame (`frame.rs`),
@@ -99,11 +99,13 @@
 //! `[-2, 2]`, so `|b - o| < 2^49` and `|1 / D_k| <= 2^48`: every slab
 //! parameter is below `2^97`, far from `f32::MAX`.
 //!
-//! # Four lanes
+//! # Eight lanes
 //! A wide node (`wide.rs`) holds its children's boxes side by side, and
 //! the walk tests them in one pass: the tests above, lane by lane, on
-//! `[f32; 4]` rows (one SSE register each; the world test's `[f64; 4]`
-//! rows, the bounds taken out of the frame first, two). Every lane computes the same
+//! `[f32; 8]` rows (one AVX register each where the CPU has AVX2, which
+//! `std` builds detect at run time and walk with a copy compiled for it;
+//! two SSE registers otherwise; the world test's `[f64; 8]` rows, the
+//! bounds taken out of the frame first, four). Every lane computes the same
 //! operations on the same operands in the same order as the one-box test
 //! (`fl(fl(b - o_k) * inv_k)` or `fl(fl(b - o_k) / d_k)`, the same
 //! comparison-and-select for the entry and exit, the same widening), and
@@ -127,17 +129,17 @@
 //! (below the exact entry) is at most the widened `M'`: the child is kept.
 //!
 //! # The stack
-//! Expanding a wide node pushes at most four children (nearest on top for
+//! Expanding a wide node pushes at most eight children (nearest on top for
 //! a closest-hit walk, in lane order for an any-hit one), and the walk
 //! then pops from that group only until it expands one of
 //! them (entries pushed by the nodes below are all popped first). So when
-//! a node is expanded the stack holds at most three entries for each wide
+//! a node is expanded the stack holds at most seven entries for each wide
 //! node above it on its path. Each wide node of a path is collapsed from
 //! a binary internal node strictly deeper than its parent's (`wide.rs`),
 //! and the builders' binary internal nodes lie at depths 0 to
 //! `MAX_DEPTH - 2` (leaves at most `MAX_DEPTH - 1`, `build.rs`,
 //! `ploc.rs`): a path has at most `MAX_DEPTH - 1` wide nodes, and the
-//! stack at most `3 (MAX_DEPTH - 2) + 4 < 3 MAX_DEPTH` entries, its size.
+//! stack at most `7 (MAX_DEPTH - 2) + 8 < 7 MAX_DEPTH` entries, its size.
 
 #![allow(
     unsafe_code,
@@ -432,16 +434,16 @@ struct Pending<T> {
     count: u32,
 }
 
-/// The walk's stack: three pending children per wide level (see the
+/// The walk's stack: seven pending children per wide level (see the
 /// module docs).
-const STACK: usize = 3 * MAX_DEPTH;
+const STACK: usize = (WIDTH - 1) * MAX_DEPTH;
 
 /// Walks every leaf whose box the exact segment `[range.min,
 /// visitor.max()]` of `ray` meets, a node's children of smaller entry
 /// first for an [ordered](Visitor::ORDERED) visitor, in lane order
 /// otherwise; `E` more roundings of the slab parameters covered (1 for a
-/// segment's exact end). The stack holds up to three pending children per
-/// wide level: `3 * MAX_DEPTH` entries, which the builders' depth bound
+/// segment's exact end). The stack holds up to seven pending children per
+/// wide level: `7 * MAX_DEPTH` entries, which the builders' depth bound
 /// never exceeds (see the module docs).
 #[inline(always)]
 pub(crate) fn walk<V: Visitor, const E: u32>(bvh: &BoxBvh, ray: &Ray, range: Interval, v: &mut V) {
@@ -449,6 +451,13 @@ pub(crate) fn walk<V: Visitor, const E: u32>(bvh: &BoxBvh, ray: &Ray, range: Int
         return;
     }
     if let Some(r) = FrameRay::<E>::of(ray, &bvh.frame) {
+        #[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
+        {
+            if std::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU supports AVX2, checked just above.
+                return unsafe { walk_avx2(bvh, &r, range, v) };
+            }
+        }
         return walk_in(bvh, &r, range, v);
     }
     let r = BoxRay::<E>::of(ray);
@@ -460,7 +469,25 @@ pub(crate) fn walk<V: Visitor, const E: u32>(bvh: &BoxBvh, ray: &Ray, range: Int
     }
 }
 
+/// [`walk_in`] compiled with AVX2, so that each row of the frame test's
+/// eight lanes is one instruction (the same operations, rounded alike).
+///
+/// # Safety
+/// The CPU must support the `avx2` feature.
+#[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+unsafe fn walk_avx2<V: Visitor, const E: u32>(
+    bvh: &BoxBvh,
+    slabs: &FrameRay<E>,
+    range: Interval,
+    v: &mut V,
+) {
+    walk_in(bvh, slabs, range, v);
+}
+
 /// [`walk`] with the slab test `slabs`.
+#[inline(always)]
 fn walk_in<V: Visitor, S: Slabs>(bvh: &BoxBvh, slabs: &S, range: Interval, v: &mut V) {
     let lo = slabs.param(range.min(), false);
     // The visitor's bound as the test's parameter, rounded up; it changes
@@ -504,7 +531,7 @@ fn walk_in<V: Visitor, S: Slabs>(bvh: &BoxBvh, slabs: &S, range: Interval, v: &m
                 n += 1;
             }
             for &(entry, l) in &kept[..n] {
-                // At most three entries per wide level stay on the stack
+                // At most seven entries per wide level stay on the stack
                 // and the wide tree is shallower than MAX_DEPTH, so a slot
                 // is always free (see the module docs).
                 stack[top] = MaybeUninit::new(Pending {
@@ -708,7 +735,7 @@ mod tests {
         let diagonal = Ray::new([0.0; 3], [1.0; 3]).unwrap();
         let r = FrameRay::<0>::of(&diagonal, &IDENTITY).unwrap();
         let (lower, mask) = r.lanes(&four, 0.0, f32::INFINITY);
-        assert_eq!(mask, 0b1111);
+        assert_eq!(mask, 0xff);
         for (l, &entry) in lower.iter().enumerate() {
             assert!(
                 kept_culled::<0>([0.0; 3], [1.0; 3], &four, l, (0.0, f64::INFINITY)).0,
@@ -809,7 +836,7 @@ mod tests {
         }
     }
 
-    /// The 4-wide walk reaches every leaf whose box the exact segment
+    /// The 8-wide walk reaches every leaf whose box the exact segment
     /// meets: small integer triangles (so that boxes touch rays exactly
     /// on faces, edges and corners) and integer rays (zero and `-0.0`
     /// components among them), ranges with and without an end, against
@@ -922,12 +949,24 @@ mod tests {
                     seen: Vec::new(),
                 };
                 walk::<_, 1>(bvh, &ray, range, &mut segment);
+                // The frame test compiled without AVX2 as well (`walk`
+                // takes the AVX2 copy where the CPU has it).
+                let mut portable = Leaves {
+                    max: range.max(),
+                    seen: Vec::new(),
+                };
+                if let Some(r) = FrameRay::<0>::of(&ray, &bvh.frame) {
+                    walk_in(bvh, &r, range, &mut portable);
+                } else {
+                    walk::<_, 0>(bvh, &ray, range, &mut portable);
+                }
                 let (o, d) = (o.map(i128::from), d.map(i128::from));
                 for &(lo, hi, start, count) in &leaves {
                     if exact_meets(lo, hi, o, d, max.map(i128::from)) {
                         kept += 1;
                         for t in &bvh.order[start..start + count] {
                             assert!(ours.seen.contains(t), "ray {i}: leaf at {start} culled");
+                            assert!(portable.seen.contains(t), "ray {i}: leaf culled");
                             assert!(
                                 segment.seen.contains(t),
                                 "segment {i}: leaf at {start} culled"

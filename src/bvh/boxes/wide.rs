@@ -1,4 +1,4 @@
-//! The 4-wide hierarchy the queries walk: either builder's binary tree
+//! The 8-wide hierarchy the queries walk: either builder's binary tree
 //! collapsed into nodes of up to [`WIDTH`] children, each child's box
 //! stored beside its siblings' (one `[f32; WIDTH]` per bound per axis,
 //! in the hierarchy's frame, `frame.rs`),
@@ -53,9 +53,9 @@ use core::mem::size_of;
 use glam::DVec3;
 
 /// Children per wide node.
-pub(crate) const WIDTH: usize = 4;
+pub(crate) const WIDTH: usize = 8;
 
-/// A wide node, 128 bytes (two cache lines): per lane `l` the child's box
+/// A wide node, 256 bytes (four cache lines): per lane `l` the child's box
 /// in the hierarchy's frame, rounded outward to `f32` (`min[k][l]`,
 /// `max[k][l]` on axis `k`, `frame.rs`), and `count[l] > 0` for a leaf
 /// holding the items `order[link[l] .. link[l] + count[l]]`, `count[l] ==
@@ -70,9 +70,10 @@ pub(crate) struct WideNode {
     pub(crate) count: [u32; WIDTH],
 }
 
-// Six SoA bound rows of four `f32` and two rows of four `u32`, 16 bytes
-// each: 128 bytes, two 64-byte lines, each row one SSE register.
-const _: () = assert!(size_of::<WideNode>() == 128);
+// Six SoA bound rows of eight `f32` and two rows of eight `u32`, 32
+// bytes each: 256 bytes, four 64-byte lines, each row one AVX register
+// (two SSE registers without AVX2).
+const _: () = assert!(size_of::<WideNode>() == 256);
 const _: () = assert!(core::mem::align_of::<WideNode>() == 64);
 
 impl WideNode {
