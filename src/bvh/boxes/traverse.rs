@@ -483,7 +483,88 @@ unsafe fn walk_avx2<V: Visitor, const E: u32>(
     range: Interval,
     v: &mut V,
 ) {
-    walk_in(bvh, slabs, range, v);
+    walk_in(bvh, &Avx2(*slabs), range, v);
+}
+
+/// The frame test in AVX2 intrinsics, made only by [`walk_avx2`] (so only
+/// where the CPU has AVX2): the same operations on the same operands in
+/// the same order as [`FrameRay`]'s lanes (`vsubps`, `vmulps`; `vmaxps`
+/// and `vminps`, which return their second operand where the comparison
+/// fails, a NaN dropped as the portable select drops it; the widening's
+/// product, sum and difference; `<=` as an ordered comparison), so the
+/// same values and mask, bit for bit, and the same derivation.
+#[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
+struct Avx2<const E: u32>(FrameRay<E>);
+
+#[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
+impl<const E: u32> Slabs for Avx2<E> {
+    type T = f32;
+
+    #[inline(always)]
+    fn param(&self, t: f64, up: bool) -> f32 {
+        self.0.param(t, up)
+    }
+
+    #[inline(always)]
+    fn lanes(&self, node: &WideNode, min: f32, max: f32) -> ([f32; WIDTH], u32) {
+        // SAFETY: an `Avx2` is made only in `walk_avx2`, which runs only
+        // where the CPU supports AVX2.
+        unsafe { avx2_lanes(&self.0, node, min, max) }
+    }
+
+    #[inline(always)]
+    fn widen_up(&self, x: f32) -> f32 {
+        self.0.widen_up(x)
+    }
+}
+
+/// See [`Avx2`].
+///
+/// # Safety
+/// The CPU must support the `avx2` feature.
+#[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn avx2_lanes<const E: u32>(
+    r: &FrameRay<E>,
+    node: &WideNode,
+    min: f32,
+    max: f32,
+) -> ([f32; WIDTH], u32) {
+    use core::arch::x86_64::*;
+    const _: () = assert!(WIDTH == 8);
+    let load = |row: &[f32; WIDTH]| {
+        // SAFETY: a row is eight `f32`s, read unaligned.
+        unsafe { _mm256_loadu_ps(row.as_ptr()) }
+    };
+    let mut near = _mm256_set1_ps(min);
+    let mut far = _mm256_set1_ps(max);
+    for k in 0..3 {
+        let (enter, exit) = if r.negative[k] {
+            (&node.max[k], &node.min[k])
+        } else {
+            (&node.min[k], &node.max[k])
+        };
+        let inv = _mm256_set1_ps(r.inv[k]);
+        let lo = _mm256_mul_ps(_mm256_sub_ps(load(enter), _mm256_set1_ps(r.enter[k])), inv);
+        let hi = _mm256_mul_ps(_mm256_sub_ps(load(exit), _mm256_set1_ps(r.exit[k])), inv);
+        near = _mm256_max_ps(lo, near);
+        far = _mm256_min_ps(hi, far);
+    }
+    let abs = |x: __m256| _mm256_and_ps(x, _mm256_castsi256_ps(_mm256_set1_epi32(0x7fff_ffff)));
+    let widen = |x: __m256| {
+        _mm256_add_ps(
+            _mm256_mul_ps(_mm256_set1_ps(FrameRay::<E>::WIDEN), abs(x)),
+            _mm256_set1_ps(SLACK_32),
+        )
+    };
+    let lower = _mm256_sub_ps(near, widen(near));
+    let upper = _mm256_add_ps(far, widen(far));
+    let mask = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(lower, upper)) as u32;
+    let mut out = [0.0; WIDTH];
+    // SAFETY: `out` holds eight `f32`s, written unaligned.
+    unsafe { _mm256_storeu_ps(out.as_mut_ptr(), lower) };
+    (out, mask)
 }
 
 /// [`walk`] with the slab test `slabs`.
@@ -755,6 +836,44 @@ mod tests {
             framed([0.0; 3], [0.0, -0.0, 1.0]) && framed([1e14, 0.0, 0.0], [huge, 0.0, 1e-300])
         );
         assert!(!framed([0.0; 3], [1e-15, 0.0, 1.0]) && !framed([1e15, 0.0, 0.0], [0.0, 0.0, 1.0]));
+    }
+
+    /// The AVX2 frame test computes the portable one's entries and mask,
+    /// bit for bit: random boxes (empty lanes among them) and rays with
+    /// zero, negative-zero and tiny direction coordinates.
+    #[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
+    #[test]
+    fn avx2_lanes_equal_the_portable_ones() {
+        if !std::is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+        let mut f = |r: i64| rng.int(r) as f32 / 8.0;
+        for i in 0..20_000 {
+            let mut node = WideNode::EMPTY;
+            for l in 0..WIDTH - (i % 3) {
+                for k in 0..3 {
+                    let (a, b) = (f(16), f(16));
+                    (node.min[k][l], node.max[k][l]) = (a.min(b), a.max(b));
+                }
+            }
+            let o = [0, 1, 2].map(|_| f64::from(f(24)));
+            let d = [0, 1, 2].map(|k| match (i + k) % 5 {
+                0 => 0.0,
+                1 => -0.0,
+                _ => f64::from(f(8)) + 1e-3,
+            });
+            let Ok(ray) = Ray::new(o, d) else { continue };
+            let Some(r) = FrameRay::<0>::of(&ray, &IDENTITY) else {
+                continue;
+            };
+            let (lo, hi) = (r.param(0.0, false), r.param(f64::from(f(64)).abs(), true));
+            let (a, ma) = r.lanes(&node, lo, hi);
+            // SAFETY: the CPU supports AVX2, checked above.
+            let (b, mb) = unsafe { avx2_lanes(&r, &node, lo, hi) };
+            assert_eq!(ma, mb, "{i}");
+            assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits), "{i}");
+        }
     }
 
     /// A small deterministic generator (xorshift64*).
