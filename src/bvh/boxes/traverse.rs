@@ -370,10 +370,37 @@ impl<const E: u32> Slabs for FrameRay<E> {
         if up { frame::up(tau) } else { frame::down(tau) }
     }
 
-    /// The frame test on the lanes of `node`: the same straight-line
-    /// lane-wise operations as the world test, on `f32` rows.
+    /// The frame test on the lanes of `node`: SSE2 intrinsics on x86_64
+    /// (two halves of four lanes, [`sse2_lanes`]), the portable lane-wise
+    /// code elsewhere; the same values either way.
     #[inline(always)]
     fn lanes(&self, node: &WideNode, min: f32, max: f32) -> ([f32; WIDTH], u32) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: every x86_64 CPU supports SSE2.
+            unsafe { sse2_lanes(self, node, min, max) }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            self.portable_lanes(node, min, max)
+        }
+    }
+
+    #[inline(always)]
+    fn widen_up(&self, x: f32) -> f32 {
+        x + (Self::WIDEN * x.abs() + SLACK_32)
+    }
+}
+
+impl<const E: u32> FrameRay<E> {
+    /// The frame test in straight-line lane-wise operations on `f32` rows,
+    /// as the world test's.
+    #[cfg_attr(
+        target_arch = "x86_64",
+        allow(dead_code, reason = "the tests' reference")
+    )]
+    #[inline(always)]
+    fn portable_lanes(&self, node: &WideNode, min: f32, max: f32) -> ([f32; WIDTH], u32) {
         let mut near = [min; WIDTH];
         let mut far = [max; WIDTH];
         for k in 0..3 {
@@ -397,11 +424,63 @@ impl<const E: u32> Slabs for FrameRay<E> {
         }
         (lower, mask)
     }
+}
 
-    #[inline(always)]
-    fn widen_up(&self, x: f32) -> f32 {
-        x + (Self::WIDEN * x.abs() + SLACK_32)
+/// The frame test in SSE2 intrinsics (every x86_64 CPU has them), two
+/// halves of four lanes: the same operations as
+/// [`FrameRay::portable_lanes`] (see [`Avx2`] for the correspondence), so
+/// the same values and mask.
+///
+/// # Safety
+/// The CPU must support SSE2: every x86_64 CPU does (the target's
+/// baseline), so this is never in doubt where it compiles.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "sse2")]
+#[inline]
+unsafe fn sse2_lanes<const E: u32>(
+    r: &FrameRay<E>,
+    node: &WideNode,
+    min: f32,
+    max: f32,
+) -> ([f32; WIDTH], u32) {
+    use core::arch::x86_64::*;
+    const _: () = assert!(WIDTH == 8);
+    let load = |row: &[f32; WIDTH], half: usize| {
+        // SAFETY: lanes `4 half .. 4 half + 4` of an eight-lane row, read
+        // unaligned.
+        unsafe { _mm_loadu_ps(row.as_ptr().add(4 * half)) }
+    };
+    let abs = |x: __m128| _mm_and_ps(x, _mm_castsi128_ps(_mm_set1_epi32(0x7fff_ffff)));
+    let widen = |x: __m128| {
+        _mm_add_ps(
+            _mm_mul_ps(_mm_set1_ps(FrameRay::<E>::WIDEN), abs(x)),
+            _mm_set1_ps(SLACK_32),
+        )
+    };
+    let mut out = [0.0; WIDTH];
+    let mut mask = 0;
+    for half in 0..2 {
+        let mut near = _mm_set1_ps(min);
+        let mut far = _mm_set1_ps(max);
+        for k in 0..3 {
+            let (enter, exit) = if r.negative[k] {
+                (&node.max[k], &node.min[k])
+            } else {
+                (&node.min[k], &node.max[k])
+            };
+            let inv = _mm_set1_ps(r.inv[k]);
+            let lo = _mm_mul_ps(_mm_sub_ps(load(enter, half), _mm_set1_ps(r.enter[k])), inv);
+            let hi = _mm_mul_ps(_mm_sub_ps(load(exit, half), _mm_set1_ps(r.exit[k])), inv);
+            near = _mm_max_ps(lo, near);
+            far = _mm_min_ps(hi, far);
+        }
+        let lower = _mm_sub_ps(near, widen(near));
+        let upper = _mm_add_ps(far, widen(far));
+        mask |= (_mm_movemask_ps(_mm_cmple_ps(lower, upper)) as u32) << (4 * half);
+        // SAFETY: lanes `4 half .. 4 half + 4` of `out`, written unaligned.
+        unsafe { _mm_storeu_ps(out.as_mut_ptr().add(4 * half), lower) };
     }
+    (out, mask)
 }
 
 /// What a walk does at the leaves.
@@ -838,8 +917,8 @@ mod tests {
         assert!(!framed([0.0; 3], [1e-15, 0.0, 1.0]) && !framed([1e15, 0.0, 0.0], [0.0, 0.0, 1.0]));
     }
 
-    /// The AVX2 frame test computes the portable one's entries and mask,
-    /// bit for bit: random boxes (empty lanes among them) and rays with
+    /// The AVX2 and SSE2 frame tests compute the portable one's entries
+    /// and mask, bit for bit: random boxes (empty lanes among them) and rays with
     /// zero, negative-zero and tiny direction coordinates.
     #[cfg(all(feature = "std", target_arch = "x86_64", not(target_feature = "avx2")))]
     #[test]
@@ -868,11 +947,14 @@ mod tests {
                 continue;
             };
             let (lo, hi) = (r.param(0.0, false), r.param(f64::from(f(64)).abs(), true));
-            let (a, ma) = r.lanes(&node, lo, hi);
+            let (a, ma) = r.portable_lanes(&node, lo, hi);
             // SAFETY: the CPU supports AVX2, checked above.
             let (b, mb) = unsafe { avx2_lanes(&r, &node, lo, hi) };
-            assert_eq!(ma, mb, "{i}");
+            // SAFETY: every x86_64 CPU supports SSE2.
+            let (c, mc) = unsafe { sse2_lanes(&r, &node, lo, hi) };
+            assert_eq!((ma, ma), (mb, mc), "{i}");
             assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits), "{i}");
+            assert_eq!(a.map(f32::to_bits), c.map(f32::to_bits), "{i}");
         }
     }
 
