@@ -8,7 +8,7 @@
 //!     target/release/examples/scene_profile sphere 100000 diffuse 4000
 //! ```
 //! Builds one of the report's meshes (`exactray::testing`: `sphere`, the
-//! displaced sphere, or `room`; N triangles) and Q of its rays
+//! displaced sphere, `terrain` or `room`; N triangles) and Q of its rays
 //! (`primary`: camera rays; `diffuse`: bounces spawned from the primary
 //! hits; `shadow`: spawned from the primary hits towards the report's
 //! light; `blocked-shadow`: in the room, towards a light above the
@@ -24,6 +24,7 @@ use exactray::query::ray::{Exact, Ray};
 use exactray::scene::{BatchQueries, MeshHit, TraceStats, TriangleMesh, spawn_ray, spawn_ray_to};
 use exactray::testing::{
     SceneMesh, SplitMix64, camera_rays, cosine_direction, displaced_sphere, room, room_camera_rays,
+    terrain,
 };
 use glam::DVec3;
 use std::hint::black_box;
@@ -98,10 +99,10 @@ fn main() {
     let kind = args.get(2).map_or("primary", String::as_str);
     let q = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(4_000);
     let mut rng = SplitMix64::new(1);
-    let data = if room_scene {
-        room(&mut rng, n)
-    } else {
-        displaced_sphere(&mut rng, n)
+    let data = match args.first().map(String::as_str) {
+        Some("room") => room(&mut rng, n),
+        Some("terrain") => terrain(&mut rng, n),
+        _ => displaced_sphere(&mut rng, n),
     };
     let mesh = TriangleMesh::new(&data.vertices, &data.triangles).expect("valid mesh");
     let rays = rays(room_scene, &data, &mesh, kind, q);
