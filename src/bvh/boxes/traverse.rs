@@ -94,8 +94,9 @@
 //!
 //! The frame test runs only where nothing overflows and `D` is exact:
 //! `|o'_k| <= 2^48` (infinite where `o_k - c_k` overflowed: then it does
-//! not run), every `D_k` zero or at least `2^-48` in magnitude, and `|p|
-//! <= 2046` (the range's scaling, `scale_pow2`). The box bounds lie within
+//! not run), every `D_k` zero or at least `2^-48` in magnitude, and `p` in
+//! `[-2044, 2046]` (the range's scaling, `scale_pow2`, whose two factors
+//! `2^(p/2)` and `2^(p - p/2)` must be normal). The box bounds lie within
 //! `[-2, 2]`, so `|b - o| < 2^49` and `|1 / D_k| <= 2^48`: every slab
 //! parameter is below `2^97`, far from `f32::MAX`.
 //!
@@ -335,7 +336,7 @@ impl<const E: u32> FrameRay<E> {
         let d = ray.direction();
         let s = unit_scale(&[d.x, d.y, d.z]);
         let p = frame.exp - s;
-        if p.abs() > 2046 {
+        if !(-2044..=2046).contains(&p) {
             return None;
         }
         let mut r = FrameRay {
