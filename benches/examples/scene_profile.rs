@@ -167,8 +167,9 @@ fn main() {
             }
             let per = |x: u64| x as f64 / rays.len() as f64;
             println!(
-                "{kind} {n}: {:.1} nodes, {:.1} triangles per closest-hit ray",
+                "{kind} {n}: {:.1} nodes, {:.1} boxes, {:.1} triangles per closest-hit ray",
                 per(stats.nodes_visited),
+                per(stats.boxes_tested),
                 per(stats.triangles_tested)
             );
         }

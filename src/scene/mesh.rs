@@ -416,6 +416,9 @@ pub struct TraceStats {
     /// Nodes of the hierarchy the walk looked at: an 8-wide node (its
     /// children's box tests, in one pass), or a leaf (its triangles).
     pub nodes_visited: u64,
+    /// Boxes tested: every lane of each wide node looked at (empty lanes
+    /// too: a node's lanes are tested in one pass).
+    pub boxes_tested: u64,
     /// Triangles tested in the leaves reached.
     pub triangles_tested: u64,
 }
@@ -441,8 +444,9 @@ impl<V: Visitor> Visitor for Counted<'_, V> {
     }
 
     #[inline]
-    fn node(&mut self) {
+    fn node(&mut self, boxes: usize) {
         self.stats.nodes_visited += 1;
+        self.stats.boxes_tested += boxes as u64;
     }
 }
 

@@ -14,7 +14,7 @@
 //! slab test, run on a node's eight children at once in `f32`, is widened
 //! by a derived bound that also covers the rounding of the ray into the
 //! frame, so that it never culls a box that the ray's exact segment
-//! meets (`traverse.rs`), and a query walks with a fixed stack of `3 *
+//! meets (`traverse.rs`), and a query walks with a fixed stack of `7 *
 //! MAX_DEPTH` entries: no query allocates.
 
 mod build;

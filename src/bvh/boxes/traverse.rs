@@ -499,10 +499,11 @@ pub(crate) trait Visitor {
     /// Looks at a leaf's items `order[start .. start + count]` (a mesh's
     /// triangles, a scene's primitives); `true` stops the walk.
     fn leaf(&mut self, triangles: &[u32]) -> bool;
-    /// Called once per node the walk looks at (to count them; nothing for
-    /// an ordinary query).
+    /// Called once per node the walk looks at, with the boxes it tests
+    /// there (a wide node's lanes, all in one pass; none at a leaf), to
+    /// count them; nothing for an ordinary query.
     #[inline(always)]
-    fn node(&mut self) {}
+    fn node(&mut self, _boxes: usize) {}
 }
 
 /// A child the walk will come back to: its widened entry and its lane's
@@ -661,7 +662,7 @@ fn walk_in<V: Visitor, S: Slabs>(bvh: &BoxBvh, slabs: &S, range: Interval, v: &m
     let mut top = 0;
     let mut at = 0usize;
     loop {
-        v.node();
+        v.node(WIDTH);
         let node = &bvh.nodes[at];
         let (lower, mut mask) = slabs.lanes(node, lo, hi);
         // One internal child kept (the common case near the leaves of a
@@ -733,7 +734,7 @@ fn walk_in<V: Visitor, S: Slabs>(bvh: &BoxBvh, slabs: &S, range: Interval, v: &m
             if p.count == 0 {
                 break p.link as usize;
             }
-            v.node();
+            v.node(0);
             let start = p.link as usize;
             let items = bvh.order.get(start..start + p.count as usize);
             if v.leaf(items.unwrap_or(&[])) {

@@ -503,9 +503,10 @@ fn closest_rows(
     note(
         "closest_hit",
         format!(
-            "{inputs}: exactray visits {:.1} nodes and tests {:.1} triangles per ray; false misses (the exact variant hits, \
-             the method misses): {}",
+            "{inputs}: exactray visits {:.1} nodes, tests {:.1} boxes and {:.1} triangles per ray; false misses (the exact \
+             variant hits, the method misses): {}",
             per_ray(stats.nodes_visited),
+            per_ray(stats.boxes_tested),
             per_ray(stats.triangles_tested),
             misses.join(", ")
         ),
