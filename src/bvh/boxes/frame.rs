@@ -11,19 +11,24 @@
 //! [`Frame::up`]). The `f64` value `x = fl(fl(b - c) 2^e)` is within `u
 //! |x| + 2^-1074` of `v` (`u = 2^-53`: the subtraction's rounding, the
 //! scaling exact but where it falls below `2^-1022`, `scale_pow2`'s
-//! bound). `f` is then `x` rounded to the nearest `f32`, moved one `f32`
-//! step down unless it is already below `x`, and one step down again: `f
-//! < x` and `x - f` is at least one `f32` step at `f`, at least `2^-149`
-//! and at least `2^-24 |f|`, which exceeds `u |x| + 2^-1074` (the
-//! `f32` steps are `2^29` times the `f64` ones): so `f < v`. A result of
-//! magnitude below `2^-100` is replaced by `-2^-100`, which is below it
-//! too: no bound, origin or range end is then subnormal or near it, in
-//! the frame where boxes span about `[-1, 1]` (subnormal operands or
-//! results slow `f32` vector arithmetic a hundredfold on common
-//! processors: the room's camera, at its frame's centre on one axis,
-//! took 2.6 times as long per ray before). [`Frame::up`] mirrors it. The result is finite whenever `|x| <= 2^127` (one step
-//! below `f32::MAX` at most), and in the frame every bound of the
-//! hierarchy has `|x| <= 2`.
+//! bound). `f` is then `x` rounded to the nearest `f32` and moved two
+//! `f32` steps down (two units off its bits, away from zero for a
+//! negative `f`). Rounding to nearest leaves `x` at least half of the
+//! first step above the result of that step, and the second step adds a
+//! whole step (the smaller of the two where they cross a power of two), so
+//! `x` lies at least one step at the result above it: at least `2^-149`
+//! and at least `2^-24 |result|`, which exceeds `u |x| + 2^-1074` (the `f32`
+//! steps are `2^29` times the `f64` ones): so `f < v`. A result of
+//! magnitude below `2^-100` (a positive `x` below a few steps above zero
+//! included) is replaced by `-2^-100`, which is below it too: no bound,
+//! origin or range end is then subnormal or near it, in the frame where
+//! boxes span about `[-1, 1]` (subnormal operands or results slow `f32`
+//! vector arithmetic a hundredfold on common processors: the room's
+//! camera, at its frame's centre on one axis, took 2.6 times as long per
+//! ray before). A rounding to `±inf` or to `-f32::MAX` is kept apart: `x
+//! = +inf` or above `f32::MAX` gives `f32::MAX` less two steps, `x <=
+//! -f32::MAX` gives `-inf`. [`Frame::up`] mirrors it. In the frame every
+//! bound of the hierarchy has `|x| <= 2`.
 //!
 //! The same two functions round a ray's origin into the frame, below and
 //! above its exact frame coordinates (`traverse.rs`), and the range's
@@ -114,15 +119,24 @@ impl Frame {
 }
 
 /// An `f32` strictly below every value within `u |x| + 2^-1074` of `x`
-/// (see the module docs); `-inf` for `x = -inf`, `f32::MAX` less a step
-/// for `x = +inf` or `x > f32::MAX`. NaN stays NaN.
+/// (see the module docs); `-inf` for `x <= -f32::MAX`, `f32::MAX` less
+/// two steps for `x = +inf` or `x > f32::MAX`. NaN stays NaN.
 #[inline(always)]
 pub(crate) fn down(x: f64) -> f32 {
-    let mut f = x as f32;
-    if f64::from(f) >= x {
-        f = f.next_down();
-    }
-    let f = f.next_down();
+    let f = x as f32;
+    let bits = f.to_bits();
+    let f = if f > 0.0 {
+        // Two steps towards zero; an `f` of one or two steps above zero
+        // goes to zero, which the floor below replaces.
+        f32::from_bits(bits.saturating_sub(2).min(f32::MAX.to_bits() - 2))
+    } else if f > -f32::MAX {
+        // Two steps away from zero (`-0.0` and `0.0` too, whose bits
+        // plus two are a positive or negative subnormal: floored below).
+        f32::from_bits(bits + 2)
+    } else {
+        // `-f32::MAX`, `-inf` or NaN.
+        f - f32::INFINITY
+    };
     // Never within 2^-100 of zero: -2^-100 instead, still below.
     if f.abs() < TINY { -TINY } else { f }
 }
@@ -146,6 +160,13 @@ mod tests {
     #[test]
     fn outward_rounding_brackets() {
         let mut values = alloc::vec![0.0, -0.0, 1.0, -1.0, 3.0, f64::MAX, f64::INFINITY];
+        // Near f32's limits, its least steps, the floor and a rounding up
+        // to a power of two.
+        for f in [f32::MAX, f32::from_bits(1), f32::from_bits(2), f32::from_bits(3), TINY] {
+            let x = f64::from(f);
+            values.extend([x, -x, x.next_up(), x.next_down(), -x.next_up()]);
+        }
+        values.extend([1.0 - pow2(-25), 1.0 - pow2(-26), -(1.0 - pow2(-25)), -f64::MAX]);
         for k in (-1074..=1023).step_by(7) {
             let p = scale_pow2(1.0, k);
             values.extend([p, -p, p * 1.25, p.next_up(), p.next_down(), -p.next_down()]);
