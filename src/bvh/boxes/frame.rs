@@ -162,11 +162,22 @@ mod tests {
         let mut values = alloc::vec![0.0, -0.0, 1.0, -1.0, 3.0, f64::MAX, f64::INFINITY];
         // Near f32's limits, its least steps, the floor and a rounding up
         // to a power of two.
-        for f in [f32::MAX, f32::from_bits(1), f32::from_bits(2), f32::from_bits(3), TINY] {
+        for f in [
+            f32::MAX,
+            f32::from_bits(1),
+            f32::from_bits(2),
+            f32::from_bits(3),
+            TINY,
+        ] {
             let x = f64::from(f);
             values.extend([x, -x, x.next_up(), x.next_down(), -x.next_up()]);
         }
-        values.extend([1.0 - pow2(-25), 1.0 - pow2(-26), -(1.0 - pow2(-25)), -f64::MAX]);
+        values.extend([
+            1.0 - pow2(-25),
+            1.0 - pow2(-26),
+            -(1.0 - pow2(-25)),
+            -f64::MAX,
+        ]);
         for k in (-1074..=1023).step_by(7) {
             let p = scale_pow2(1.0, k);
             values.extend([p, -p, p * 1.25, p.next_up(), p.next_down(), -p.next_down()]);
