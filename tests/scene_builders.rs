@@ -8,10 +8,11 @@
 //! within the walk's stack (many identical triangles) still build.
 #![cfg(feature = "ploc")]
 
+use exactray::bvh::boxes::{BvhBuilder, PlocQuality};
 use exactray::interval::Interval;
 use exactray::query::ray::Watertight;
 use exactray::query::ray::{Exact, Ray};
-use exactray::scene::{BvhBuilder, PlocQuality, TraceStats, TriangleMesh};
+use exactray::scene::{TraceStats, TriangleMesh};
 use exactray::testing::{SplitMix64, TiledMesh, unit_vector};
 use glam::DVec3;
 

@@ -314,3 +314,30 @@ fn shadow_segments_end_exactly_at_q() {
     assert!(blocked > 1000 && free > 1000, "{blocked} {free}");
     assert!(rounded_wrong > 20, "{rounded_wrong}");
 }
+
+/// Fuzzer findings (`fuzz/fuzz_targets/ray_mesh.rs`), kept as exact bit
+/// patterns and checked against the oracle.
+#[test]
+fn fuzz_findings() {
+    // A subnormal direction on a mesh spanning 1e307: the hierarchy's frame
+    // scaled its parameters by 2^-2046, where `scale_pow2`'s factors are
+    // not both normal, and the range's end became NaN: the box was culled
+    // and the ray starting on the triangle's vertex missed.
+    let vertices = [
+        [0x6968fffffdfffaff, 0x0000000000000050, 0x0000000000000000],
+        [0x313131007edd0000, 0x3131313131313131, 0xddff313131313131],
+        [0xffbf006c09533dff, 0xfaff5069976971c6, 0x07077b0000000080],
+    ]
+    .map(|p: [u64; 3]| p.map(f64::from_bits));
+    let triangles = [[2, 1, 0], [1, 2, 0], [1, 2, 0]];
+    let origin = vertices[1];
+    let direction =
+        [0x000097a7429f0100, 0x0000000000000000, 0x0000000000000000].map(f64::from_bits);
+    let mesh = TriangleMesh::new(&vertices, &triangles).unwrap();
+    let ray = Ray::new(origin, direction).unwrap();
+    let tris: Vec<[usize; 3]> = triangles.iter().map(|t| t.map(|i| i as usize)).collect();
+    let want = mesh_oracle::ray_mesh(origin, direction, &vertices, &tris);
+    assert!(want.is_some());
+    assert!(agrees(closest_exact(&mesh, &ray), &want), "{want:?}");
+    assert!(mesh.occluded_with::<Exact>(&ray, Interval::FORWARD));
+}

@@ -224,7 +224,8 @@ pub(crate) fn below_lattice(bound: f64, lattice: i32) -> bool {
     e >= -1022 && bound < pow2(e)
 }
 
-/// `v * 2^k` for `|k| <= 2046`: exact unless the result falls below
+/// `v * 2^k` for `-2044 <= k <= 2046` (both factors `2^(k/2)` and
+/// `2^(k - k/2)` normal): exact unless the result falls below
 /// `2^-1022`; there the two rounded steps leave an absolute error of at most
 /// `2^-1074` (one half-ulp of the smallest subnormal per step).
 #[inline(always)]

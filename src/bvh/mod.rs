@@ -68,6 +68,7 @@
 //! `nearest_build`).
 
 mod batch;
+pub mod boxes;
 mod build;
 mod nearest;
 mod radius;

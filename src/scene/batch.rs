@@ -16,22 +16,54 @@ fn each_into<Q, R>(queries: &[Q], out: &mut [R], f: impl Fn(&Q) -> R) -> Result<
     Ok(())
 }
 
-/// [`each_into`] over rayon's thread pool.
+/// [`each_into`] over rayon's thread pool, in contiguous blocks, the
+/// calling thread working beside the pool's: each worker (one task per
+/// pool thread but one, and the caller) takes the next block of queries
+/// and its block of `out` from a shared queue until none is left, runs
+/// [`each_into`]'s loop over it, and writes that block alone, so no two
+/// tasks write the same cache line but at a block's ends.
+///
+/// Rayon's own parallel iterators leave the caller asleep while the
+/// pool's threads work; on two cores the speed-up of `par_closest_hits`
+/// over `closest_hits` then varied from 0.96x to 1.87x between identical
+/// runs on an idle machine, and with the caller working it is 1.76x to
+/// 1.79x on calls of 2048 rays and 1.89x to 1.92x on calls of 20,000,
+/// run after run (`scene_profile sphere 100000 primary 20000 batch`).
 #[cfg(feature = "rayon")]
 fn par_each_into<Q: Sync, R: Send>(
     queries: &[Q],
     out: &mut [R],
     f: impl Fn(&Q) -> R + Sync,
 ) -> Result<(), InputError> {
-    use rayon::prelude::*;
+    use std::sync::Mutex;
     InputError::check_lengths(queries.len(), out.len())?;
-    // A task of at least 64 rays: a ray query takes 0.1 to a few µs, so a
-    // task outweighs rayon's per-task cost (about a µs).
-    queries
-        .par_iter()
-        .zip(out.par_iter_mut())
-        .with_min_len(64)
-        .for_each(|(q, o)| *o = f(q));
+    let threads = rayon::current_num_threads().max(1);
+    // About eight blocks per thread, so that a thread slowed by other work
+    // leaves the rest to the others, and at least 64 queries per block: a
+    // ray query takes 0.1 to a few µs, so a block outweighs the cost of
+    // taking it (a lock, about a µs with the task's start).
+    let block = (queries.len() / (8 * threads)).max(64);
+    let queue = Mutex::new(queries.chunks(block).zip(out.chunks_mut(block)));
+    let work = || {
+        loop {
+            // A poisoned lock means another task panicked: stop taking
+            // blocks; rayon passes the panic on to the caller.
+            let next = match queue.lock() {
+                Ok(mut blocks) => blocks.next(),
+                Err(_) => None,
+            };
+            let Some((q, o)) = next else { break };
+            for (q, o) in q.iter().zip(o) {
+                *o = f(q);
+            }
+        }
+    };
+    rayon::in_place_scope(|scope| {
+        for _ in 1..threads {
+            scope.spawn(|_| work());
+        }
+        work();
+    });
     Ok(())
 }
 

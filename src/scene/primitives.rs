@@ -4,10 +4,9 @@
 //! [`Scene`]'s docs give the rule its queries follow and what its
 //! hierarchy guarantees.
 
-use super::build::{self, Item};
-use super::traverse::{BoxRay, Visitor, walk};
-use super::{MeshHit, TriangleBvh, TriangleMesh};
+use super::{MeshHit, TriangleMesh};
 use crate::arith::roundoff::gamma;
+use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk};
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -215,7 +214,7 @@ impl SceneBuilder {
         }
         Scene {
             primitives: self.primitives,
-            bvh: build::build(items).into(),
+            bvh: BoxBvh::build(items, BvhBuilder::BinnedSah),
             unbounded,
         }
     }
@@ -289,7 +288,7 @@ impl SceneBuilder {
 #[derive(Clone, Debug)]
 pub struct Scene {
     primitives: Vec<Primitive>,
-    bvh: TriangleBvh,
+    bvh: BoxBvh,
     unbounded: Vec<u32>,
 }
 
@@ -467,6 +466,8 @@ impl<T: TriangleTest> AnyHit<'_, T> {
 }
 
 impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
+    const ORDERED: bool = false;
+
     #[inline]
     fn max(&self) -> f64 {
         self.max
@@ -547,7 +548,7 @@ impl Scene {
         for &id in &self.unbounded {
             v.consider(id);
         }
-        walk(&self.bvh, &BoxRay::<0>::of(ray), walked(range), &mut v);
+        walk::<_, 0>(&self.bvh, ray, walked(range), &mut v);
         v.best
     }
 
@@ -573,7 +574,7 @@ impl Scene {
             test: PhantomData,
         };
         if !v.leaf(&self.unbounded) {
-            walk(&self.bvh, &BoxRay::<0>::of(ray), walked(range), &mut v);
+            walk::<_, 0>(&self.bvh, ray, walked(range), &mut v);
         }
         v.found
     }

@@ -3,7 +3,8 @@
 //! `f32` Möller–Trumbore test, as its README and examples use them) and
 //! parry3d-f64's `TriMesh` ray cast. Each answers a closest hit as `(triangle,
 //! t)` with `t` along the ray's own direction, and a shadow ray as
-//! blocked or not, for `t` in `[0, tmax]`.
+//! blocked or not, for `t` in `[tmin, tmax]` (obvhs, in `f32`) or `[0,
+//! tmax]` (parry3d, in `f64`).
 
 use glam::DVec3;
 use obvhs::BvhBuildParams;
@@ -51,17 +52,17 @@ impl ObvhsScene {
         }
     }
 
-    fn ray(o: DVec3, d: DVec3, tmax: f64) -> ORay {
-        ORay::new(f32x3(o), f32x3(d), 0.0, tmax as f32)
+    fn ray(o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> ORay {
+        ORay::new(f32x3(o), f32x3(d), tmin as f32, tmax as f32)
     }
 
     /// The closest hit by the `CwBvh` traversal.
     #[inline]
-    pub fn closest_cw(&self, o: DVec3, d: DVec3, tmax: f64) -> Option<(u32, f64)> {
+    pub fn closest_cw(&self, o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> Option<(u32, f64)> {
         let mut hit = RayHit::none();
         let found = self
             .cw
-            .ray_traverse(Self::ray(o, d, tmax), &mut hit, |ray, id| {
+            .ray_traverse(Self::ray(o, d, tmin, tmax), &mut hit, |ray, id| {
                 self.triangles[self.cw.primitive_indices[id] as usize].intersect(ray)
             });
         found.then(|| {
@@ -74,11 +75,11 @@ impl ObvhsScene {
 
     /// The closest hit by the `Bvh2` traversal.
     #[inline]
-    pub fn closest_bvh2(&self, o: DVec3, d: DVec3, tmax: f64) -> Option<(u32, f64)> {
+    pub fn closest_bvh2(&self, o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> Option<(u32, f64)> {
         let mut hit = RayHit::none();
         let found = self
             .bvh2
-            .ray_traverse(Self::ray(o, d, tmax), &mut hit, |ray, id| {
+            .ray_traverse(Self::ray(o, d, tmin, tmax), &mut hit, |ray, id| {
                 self.triangles[self.bvh2.primitive_indices[id] as usize].intersect(ray)
             });
         found.then(|| {
@@ -91,18 +92,20 @@ impl ObvhsScene {
 
     /// Whether the `CwBvh` traversal finds any hit (stopping at the first).
     #[inline]
-    pub fn occluded_cw(&self, o: DVec3, d: DVec3, tmax: f64) -> bool {
-        !self.cw.ray_traverse_miss(Self::ray(o, d, tmax), |ray, id| {
-            self.triangles[self.cw.primitive_indices[id] as usize].intersect(ray)
-        })
+    pub fn occluded_cw(&self, o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> bool {
+        !self
+            .cw
+            .ray_traverse_miss(Self::ray(o, d, tmin, tmax), |ray, id| {
+                self.triangles[self.cw.primitive_indices[id] as usize].intersect(ray)
+            })
     }
 
     /// Whether the `Bvh2` traversal finds any hit (stopping at the first).
     #[inline]
-    pub fn occluded_bvh2(&self, o: DVec3, d: DVec3, tmax: f64) -> bool {
+    pub fn occluded_bvh2(&self, o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> bool {
         !self
             .bvh2
-            .ray_traverse_miss(Self::ray(o, d, tmax), |ray, id| {
+            .ray_traverse_miss(Self::ray(o, d, tmin, tmax), |ray, id| {
                 self.triangles[self.bvh2.primitive_indices[id] as usize].intersect(ray)
             })
     }

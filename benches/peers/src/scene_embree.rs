@@ -45,22 +45,22 @@ impl EmbreeScene {
         }
     }
 
-    /// The closest hit for `t` in `[0, tmax]`: the triangle and `t`.
+    /// The closest hit for `t` in `[tmin, tmax]`: the triangle and `t`.
     #[inline]
-    pub fn closest(&self, o: DVec3, d: DVec3, tmax: f64) -> Option<(u32, f64)> {
+    pub fn closest(&self, o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> Option<(u32, f64)> {
         let mut ctx = IntersectContext::coherent();
-        let mut hit = RayHit::new(Ray::segment(v3(o), v3(d), 0.0, tmax as f32));
+        let mut hit = RayHit::new(Ray::segment(v3(o), v3(d), tmin as f32, tmax as f32));
         self.scene.intersect(&mut ctx, &mut hit);
         hit.hit
             .hit()
             .then_some((hit.hit.primID, hit.ray.tfar as f64))
     }
 
-    /// Whether the ray meets the mesh for `t` in `[0, tmax]`.
+    /// Whether the ray meets the mesh for `t` in `[tmin, tmax]`.
     #[inline]
-    pub fn occluded(&self, o: DVec3, d: DVec3, tmax: f64) -> bool {
+    pub fn occluded(&self, o: DVec3, d: DVec3, tmin: f64, tmax: f64) -> bool {
         let mut ctx = IntersectContext::coherent();
-        let mut ray = Ray::segment(v3(o), v3(d), 0.0, tmax as f32);
+        let mut ray = Ray::segment(v3(o), v3(d), tmin as f32, tmax as f32);
         self.scene.occluded(&mut ctx, &mut ray);
         // Embree marks an occluded ray by setting its `tfar` to -inf.
         ray.tfar == f32::NEG_INFINITY

@@ -35,13 +35,11 @@
 //!   `ns_per_op`: spawning and tracing one secondary ray.
 
 use crate::framework::{Config, Measure, Row, method, note, time_methods};
+use exactray::bvh::boxes::{BvhBuilder, PlocQuality};
 use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray, Watertight};
 use exactray::scene::BatchQueries;
-use exactray::scene::{
-    BvhBuilder, MeshHit, PlocQuality, TraceStats, TriangleMesh, reflect_above, spawn_ray,
-    spawn_ray_to,
-};
+use exactray::scene::{MeshHit, TraceStats, TriangleMesh, reflect_above, spawn_ray, spawn_ray_to};
 use exactray::testing::{
     SceneMesh, SplitMix64, camera_rays, cosine_direction, displaced_sphere, room, room_camera_rays,
     terrain,
@@ -122,8 +120,20 @@ impl Setup {
             ),
         );
         #[cfg(feature = "embree")]
-        let embree =
-            exactray_peers::scene_embree::EmbreeScene::new(&data.vertices, &data.triangles);
+        let embree = {
+            let t = Instant::now();
+            let embree =
+                exactray_peers::scene_embree::EmbreeScene::new(&data.vertices, &data.triangles);
+            note(
+                "closest_hit",
+                format!(
+                    "{name}: Embree's scene built and committed in {:.0} ms (its bytes per triangle are not \
+                     reported by its API)",
+                    t.elapsed().as_secs_f64() * 1e3
+                ),
+            );
+            embree
+        };
         Setup {
             name,
             data,
@@ -156,20 +166,63 @@ fn obvhs_scene(data: &SceneMesh) -> Option<ObvhsScene> {
     })
 }
 
-/// A ray as the peers take it: origin, direction, largest `t`.
+/// A ray, its range, and the least `t` an `f32` peer starts it at.
 #[derive(Clone, Copy)]
 struct Case {
     ray: Ray,
     range: Interval,
+    /// `0` for a camera ray; for a ray leaving a surface, the `tnear` a
+    /// user of an `f32` peer sets so that the origin's rounding does not
+    /// put it back on the surface it leaves (see [`peer_tnear`]).
+    peer_tmin: f64,
 }
 
 impl Case {
     fn of(o: DVec3, d: DVec3, range: Interval) -> Option<Case> {
-        Ray::new(o, d).ok().map(|ray| Case { ray, range })
+        Ray::new(o, d).ok().map(|ray| Case {
+            ray,
+            range,
+            peer_tmin: 0.0,
+        })
     }
-    fn parts(&self) -> (DVec3, DVec3, f64) {
-        (self.ray.origin(), self.ray.direction(), self.range.max())
+
+    /// A ray spawned from the hit `h`: the `f32` peers start it at
+    /// [`peer_tnear`].
+    fn leaving(ray: Ray, range: Interval, h: &MeshHit) -> Case {
+        Case {
+            ray,
+            range,
+            peer_tmin: peer_tnear(&ray, h.hit.normal),
+        }
     }
+
+    /// What a peer takes: origin, direction, `tnear` (for the `f32` peers)
+    /// and `tfar`.
+    fn parts(&self) -> (DVec3, DVec3, f64, f64) {
+        (
+            self.ray.origin(),
+            self.ray.direction(),
+            self.peer_tmin,
+            self.range.max(),
+        )
+    }
+}
+
+/// The `tnear` that keeps an `f32` peer's ray off the surface it leaves,
+/// as a renderer that knows the surface's normal `n` sets it: rounding the
+/// origin and the triangle's vertices to `f32` moves each by at most half
+/// an `f32` step per coordinate, so the surface comes back within
+/// `sum_k step(o_k) |n_k|` of the origin along `n`, which the ray covers at
+/// `t = that / |d . n|`; twice that, so that the peer's own test's
+/// rounding is covered too.
+fn peer_tnear(ray: &Ray, n: DVec3) -> f64 {
+    let step = |x: f64| {
+        let f = (x as f32).abs();
+        f64::from(f.next_up() - f)
+    };
+    let o = ray.origin();
+    let along = (0..3).map(|k| step(o[k]) * n[k].abs()).sum::<f64>();
+    2.0 * along / ray.direction().dot(n).abs()
 }
 
 /// How much work the scene families do.
@@ -244,18 +297,22 @@ fn closest_methods(s: &Arc<Setup>) -> Vec<Closest> {
     ];
     if s.obvhs.is_some() {
         m.push(method("obvhs", move |q: &Case| {
-            let (o, dir, max) = q.parts();
-            d.obvhs.as_ref().and_then(|b| b.closest_cw(o, dir, max))
+            let (o, dir, min, max) = q.parts();
+            d.obvhs
+                .as_ref()
+                .and_then(|b| b.closest_cw(o, dir, min, max))
         }));
         m.push(method("obvhs-bvh2", move |q: &Case| {
-            let (o, dir, max) = q.parts();
-            e.obvhs.as_ref().and_then(|b| b.closest_bvh2(o, dir, max))
+            let (o, dir, min, max) = q.parts();
+            e.obvhs
+                .as_ref()
+                .and_then(|b| b.closest_bvh2(o, dir, min, max))
         }));
     }
     if s.parry.is_some() {
         let p = s.clone();
         m.push(method("parry3d", move |q: &Case| {
-            let (o, dir, max) = q.parts();
+            let (o, dir, _, max) = q.parts();
             p.parry.as_ref().and_then(|p| p.closest(o, dir, max))
         }));
     }
@@ -263,8 +320,8 @@ fn closest_methods(s: &Arc<Setup>) -> Vec<Closest> {
     {
         let p = s.clone();
         m.push(method("embree", move |q: &Case| {
-            let (o, dir, max) = q.parts();
-            p.embree.closest(o, dir, max)
+            let (o, dir, min, max) = q.parts();
+            p.embree.closest(o, dir, min, max)
         }));
     }
     for parallel in [false, true] {
@@ -344,20 +401,22 @@ fn any_hit_methods(s: &Arc<Setup>) -> Vec<AnyHit> {
     ];
     if s.obvhs.is_some() {
         m.push(method("obvhs", move |q: &Case| {
-            let (o, dir, max) = q.parts();
-            d.obvhs.as_ref().is_some_and(|b| b.occluded_cw(o, dir, max))
+            let (o, dir, min, max) = q.parts();
+            d.obvhs
+                .as_ref()
+                .is_some_and(|b| b.occluded_cw(o, dir, min, max))
         }));
         m.push(method("obvhs-bvh2", move |q: &Case| {
-            let (o, dir, max) = q.parts();
+            let (o, dir, min, max) = q.parts();
             e.obvhs
                 .as_ref()
-                .is_some_and(|b| b.occluded_bvh2(o, dir, max))
+                .is_some_and(|b| b.occluded_bvh2(o, dir, min, max))
         }));
     }
     if s.parry.is_some() {
         let p = s.clone();
         m.push(method("parry3d", move |q: &Case| {
-            let (o, dir, max) = q.parts();
+            let (o, dir, _, max) = q.parts();
             p.parry.as_ref().is_some_and(|p| p.occluded(o, dir, max))
         }));
     }
@@ -365,8 +424,8 @@ fn any_hit_methods(s: &Arc<Setup>) -> Vec<AnyHit> {
     {
         let p = s.clone();
         m.push(method("embree", move |q: &Case| {
-            let (o, dir, max) = q.parts();
-            p.embree.occluded(o, dir, max)
+            let (o, dir, min, max) = q.parts();
+            p.embree.occluded(o, dir, min, max)
         }));
     }
     m
@@ -444,9 +503,10 @@ fn closest_rows(
     note(
         "closest_hit",
         format!(
-            "{inputs}: exactray visits {:.1} nodes and tests {:.1} triangles per ray; false misses (the exact variant hits, \
-             the method misses): {}",
+            "{inputs}: exactray visits {:.1} nodes, tests {:.1} boxes and {:.1} triangles per ray; false misses (the exact \
+             variant hits, the method misses): {}",
             per_ray(stats.nodes_visited),
+            per_ray(stats.boxes_tested),
             per_ray(stats.triangles_tested),
             misses.join(", ")
         ),
@@ -519,6 +579,15 @@ fn any_hit_rows(
         .iter()
         .map(|c| s.ours.occluded_with::<Exact>(&c.ray, c.range))
         .collect();
+    let blocked = exact.iter().filter(|&&b| b).count();
+    note(
+        "any_hit",
+        format!(
+            "{inputs}: {blocked} of {} rays blocked (exact variant); the f32 peers start each ray at the \
+             tnear of its origin's rounding (scene.rs, peer_tnear)",
+            cases.len()
+        ),
+    );
     methods
         .iter()
         .zip(ns)
@@ -574,27 +643,35 @@ fn diffuse_cases(hits: &[(Case, MeshHit)], rng: &mut SplitMix64) -> Vec<Case> {
     hits.iter()
         .filter_map(|(c, h)| {
             let ray = spawn_ray(&h.hit, cosine_direction(facing(h, c), rng)).ok()?;
-            Some(Case {
-                ray,
-                range: Interval::FORWARD,
-            })
+            Some(Case::leaving(ray, Interval::FORWARD, h))
         })
         .collect()
 }
 
-/// Shadow rays from the primary hits to a point light above the scene.
-fn shadow_cases(s: &Setup, hits: &[(Case, MeshHit)]) -> Vec<Case> {
+/// The point light of `shadow:N`: above the scene (inside the room, under
+/// its ceiling).
+fn light(s: &Setup) -> DVec3 {
     let (lo, hi) = s.data.bounds();
-    let light = if s.name == "room" {
+    if s.name == "room" {
         DVec3::new(2.0, 1.0, 9.5)
     } else {
         let size = (hi - lo).max_element();
         (lo + hi) * 0.5 + DVec3::new(-0.7, 0.4, 1.0) * size
-    };
+    }
+}
+
+/// The light of the room's `blocked-shadow:N`: above its ceiling, so that
+/// every segment from a point below the ceiling is blocked (by the
+/// ceiling or by an object on the way); those from the ceiling itself
+/// leave it upwards, unblocked.
+const BLOCKED_LIGHT: DVec3 = DVec3::new(0.0, 0.0, 10.5);
+
+/// Shadow rays from the primary hits to a point light.
+fn shadow_cases(light: DVec3, hits: &[(Case, MeshHit)]) -> Vec<Case> {
     hits.iter()
         .filter_map(|(_, h)| {
             let (ray, range) = spawn_ray_to(&h.hit, light).ok()?;
-            Some(Case { ray, range })
+            Some(Case::leaving(ray, range, h))
         })
         .collect()
 }
@@ -701,7 +778,8 @@ pub fn run_any_hit(cfg: &Config) -> Vec<Row> {
         let (n, p) = (s.n(), prefix(s));
         let mut rng = cfg.rng("any_hit", &format!("{}:{n}", s.name));
         let primaries = primary_cases(s, sizes.checked, &mut rng);
-        let shadows = shadow_cases(s, &primary_hits(s, &primaries));
+        let hits = primary_hits(s, &primaries);
+        let shadows = shadow_cases(light(s), &hits);
         rows.extend(any_hit_rows(
             s,
             format!("{p}shadow:{n}"),
@@ -709,6 +787,16 @@ pub fn run_any_hit(cfg: &Config) -> Vec<Row> {
             &sizes,
             cfg,
         ));
+        if s.name == "room" {
+            let blocked = shadow_cases(BLOCKED_LIGHT, &hits);
+            rows.extend(any_hit_rows(
+                s,
+                format!("blocked-shadow:{n}"),
+                &blocked,
+                &sizes,
+                cfg,
+            ));
+        }
     }
     rows
 }

@@ -1,5 +1,5 @@
 //! The no_std binned-SAH builder of the binary [`BinaryBvh`] (collapsed
-//! into the walk's 4-wide tree afterwards, `wide.rs`): top-down, 12 bins
+//! into the walk's 8-wide tree afterwards, `wide.rs`): top-down, 12 bins
 //! per split along the widest axis of the triangles' box centres, leaves
 //! of up to [`LEAF`] triangles.
 //!
@@ -10,9 +10,9 @@
 //! its area to be finite), it is the median along that axis, which halves
 //! the triangles. A subtree of at most `2^32` triangles reaches leaves of
 //! at most [`LEAF`] after 31 halvings, so no leaf lies deeper than `32 +
-//! 31 = 63` levels, below [`MAX_DEPTH`] (64): the walk of the 4-wide tree
-//! collapsed from it, whose fixed stack holds `3 * MAX_DEPTH` entries
-//! (three pending children per wide level, `traverse.rs`), never overflows.
+//! 31 = 63` levels, below [`MAX_DEPTH`] (64): the walk of the 8-wide tree
+//! collapsed from it, whose fixed stack holds `7 * MAX_DEPTH` entries
+//! (seven pending children per wide level, `traverse.rs`), never overflows.
 //!
 //! The heuristic only chooses the tree's shape: boxes are exact, whichever
 //! split is chosen, and so are the queries.
@@ -31,10 +31,10 @@ const SAH_DEPTH: usize = 32;
 /// primitive): its box, its centre (rounded: only the split choice reads
 /// it) and its index in the mesh (its id in the scene).
 #[derive(Clone, Copy)]
-pub(super) struct Item {
-    pub min: DVec3,
-    pub max: DVec3,
-    pub index: u32,
+pub(crate) struct Item {
+    pub(crate) min: DVec3,
+    pub(crate) max: DVec3,
+    pub(crate) index: u32,
 }
 
 impl Item {
@@ -54,7 +54,7 @@ pub(super) fn bounds(items: &[Item]) -> (DVec3, DVec3) {
 }
 
 /// Half the surface area of a box (what the heuristic compares, and what
-/// the 4-wide collapse opens first, `wide.rs`).
+/// the 8-wide collapse opens first, `wide.rs`).
 pub(super) fn half_area(min: DVec3, max: DVec3) -> f64 {
     let e = (max - min).max(DVec3::ZERO);
     e.x * e.y + e.y * e.z + e.z * e.x

@@ -1,6 +1,7 @@
-//! The 4-wide hierarchy the queries walk: either builder's binary tree
+//! The 8-wide hierarchy the queries walk: either builder's binary tree
 //! collapsed into nodes of up to [`WIDTH`] children, each child's box
-//! stored beside its siblings' (one `[f64; WIDTH]` per bound per axis),
+//! stored beside its siblings' (one `[f32; WIDTH]` per bound per axis,
+//! in the hierarchy's frame, `frame.rs`),
 //! so that the walk tests all of a node's children in one pass over
 //! fixed-size arrays (`traverse.rs`).
 //!
@@ -16,8 +17,8 @@
 //! Boulos, "Getting Rid of Packets", 2008). Each lane is then a leaf (it
 //! holds the triangles) or links the wide node collapsed from its binary
 //! node. A binary tree of at most [`LEAF`] triangles becomes one wide
-//! node with one lane. Boxes are copied, never recomputed: they stay the
-//! exact boxes of the builders.
+//! node with one lane. Each lane's box is its binary node's exact box
+//! rounded outward into the frame: it holds every point of that box.
 //!
 //! Taking small subtrees whole halved the terrain's wide nodes (leaves of
 //! the binned builder hold two triangles on average, so most bottom
@@ -37,12 +38,14 @@
 //! exit of `-inf` (`(+inf - o) * inv` is `+inf` for `inv > 0`, and the
 //! bounds swap with the sign of `inv`, `-0.0`'s too; no product is `inf
 //! * 0`, as `inv` is never zero and the dividing path divides by a
-//! finite direction), so the widened entry is `inf - inf = NaN` and the
+//! finite direction; the world-coordinate path maps the infinite bounds
+//! to infinities), so the widened entry is `inf - inf = NaN` and the
 //! lane fails the walk's `<=`: culled by construction, never followed.
 //!
 //! [`MAX_DEPTH`]: super::MAX_DEPTH
 
 use super::build::half_area;
+use super::frame::Frame;
 use super::{BinaryBvh, LEAF, Node};
 use alloc::vec;
 use alloc::vec::Vec;
@@ -50,64 +53,51 @@ use core::mem::size_of;
 use glam::DVec3;
 
 /// Children per wide node.
-pub(super) const WIDTH: usize = 4;
+pub(crate) const WIDTH: usize = 8;
 
-/// A wide node, 224 bytes: per lane `l` the child's box (`min[k][l]`,
-/// `max[k][l]` on axis `k`, exact), and `count[l] > 0` for a leaf holding
-/// the triangles `order[link[l] .. link[l] + count[l]]`, `count[l] == 0`
-/// for an internal child `nodes[link[l]]` (or an empty lane: inverted
+/// A wide node, 256 bytes (four cache lines): per lane `l` the child's box
+/// in the hierarchy's frame, rounded outward to `f32` (`min[k][l]`,
+/// `max[k][l]` on axis `k`, `frame.rs`), and `count[l] > 0` for a leaf
+/// holding the items `order[link[l] .. link[l] + count[l]]`, `count[l] ==
+/// 0` for an internal child `nodes[link[l]]` (or an empty lane: inverted
 /// box, see the module docs).
 #[derive(Clone, Copy, Debug)]
-#[repr(C, align(32))]
+#[repr(C, align(64))]
 pub(crate) struct WideNode {
-    pub(super) min: [[f64; WIDTH]; 3],
-    pub(super) max: [[f64; WIDTH]; 3],
-    pub(super) link: [u32; WIDTH],
-    pub(super) count: [u32; WIDTH],
+    pub(crate) min: [[f32; WIDTH]; 3],
+    pub(crate) max: [[f32; WIDTH]; 3],
+    pub(crate) link: [u32; WIDTH],
+    pub(crate) count: [u32; WIDTH],
 }
 
-// Six SoA bound rows of four `f64` and two rows of four `u32`: 224 bytes,
-// seven 32-byte lines' worth, each row starting on a 32-byte boundary
-// (the rows are what the walk loads).
-const _: () = assert!(size_of::<WideNode>() == 224);
-const _: () = assert!(core::mem::align_of::<WideNode>() == 32);
+// Six SoA bound rows of eight `f32` and two rows of eight `u32`, 32
+// bytes each: 256 bytes, four 64-byte lines, each row one AVX register
+// (two SSE registers without AVX2).
+const _: () = assert!(size_of::<WideNode>() == 256);
+const _: () = assert!(core::mem::align_of::<WideNode>() == 64);
 
 impl WideNode {
     /// Every lane empty (see the module docs).
-    pub(super) const EMPTY: WideNode = WideNode {
-        min: [[f64::INFINITY; WIDTH]; 3],
-        max: [[f64::NEG_INFINITY; WIDTH]; 3],
+    pub(crate) const EMPTY: WideNode = WideNode {
+        min: [[f32::INFINITY; WIDTH]; 3],
+        max: [[f32::NEG_INFINITY; WIDTH]; 3],
         link: [0; WIDTH],
         count: [0; WIDTH],
     };
 
-    /// Puts binary node `b`'s box in lane `l`.
-    fn set_box(&mut self, l: usize, b: &Node) {
+    /// Puts binary node `b`'s box in lane `l`, rounded outward into
+    /// `frame`.
+    fn set_box(&mut self, l: usize, b: &Node, frame: &Frame) {
         for k in 0..3 {
-            self.min[k][l] = b.min[k];
-            self.max[k][l] = b.max[k];
+            self.min[k][l] = frame.down(b.min[k], k);
+            self.max[k][l] = frame.up(b.max[k], k);
         }
-    }
-
-    /// The union of the lanes' boxes (exact; empty lanes add nothing).
-    pub(super) fn bounds(&self) -> (DVec3, DVec3) {
-        let mut lo = DVec3::INFINITY;
-        let mut hi = DVec3::NEG_INFINITY;
-        for l in 0..WIDTH {
-            let (a, b) = (
-                DVec3::new(self.min[0][l], self.min[1][l], self.min[2][l]),
-                DVec3::new(self.max[0][l], self.max[1][l], self.max[2][l]),
-            );
-            lo = lo.min(a);
-            hi = hi.max(b);
-        }
-        (lo, hi)
     }
 }
 
 /// The wide nodes collapsed from `binary` (see the module docs), the
 /// root first and each node before its children.
-pub(super) fn collapse(binary: &BinaryBvh) -> Vec<WideNode> {
+pub(super) fn collapse(binary: &BinaryBvh, frame: &Frame) -> Vec<WideNode> {
     let nodes = &binary.nodes;
     // About three binary internal nodes per wide node.
     let mut wide = Vec::with_capacity(nodes.len() / 6 + 1);
@@ -144,7 +134,7 @@ pub(super) fn collapse(binary: &BinaryBvh) -> Vec<WideNode> {
         }
         let mut node = WideNode::EMPTY;
         for (l, &c) in children[..n].iter().enumerate() {
-            node.set_box(l, &nodes[c]);
+            node.set_box(l, &nodes[c], frame);
             if is_leaf(c) {
                 (node.link[l], node.count[l]) = leaves[c];
             }

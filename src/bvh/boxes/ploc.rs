@@ -10,7 +10,7 @@
 //! its distance from the origin (a mesh at `1e8` keeps its shape). The
 //! nodes are then written out in the binned builder's preorder layout with
 //! the exact boxes of their triangles, recomputed from the `f64` items,
-//! and collapsed into the walk's 4-wide tree as the binned builder's are
+//! and collapsed into the walk's 8-wide tree as the binned builder's are
 //! (`wide.rs`): the queries are exactly as conservative as with the binned
 //! builder.
 //!
