@@ -3,7 +3,7 @@
 //! bottom-up (a leaf's around its points, a parent's around its children's).
 
 use super::sphere::{merge, norm2_root_up, sum_up, unscale_up};
-use super::{Child, LEAF, Lanes, Node, SphereBvh, Spheres, first_part};
+use super::{CacheLine, Child, LEAF, Node, SphereBvh, Spheres, first_part};
 use crate::arith::exponent::unit_pow2;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -54,8 +54,8 @@ pub(crate) fn build(mut entries: Vec<Entry>, max_abs: f64, balls: bool) -> Spher
 /// One coordinate of every point in blocks of 8, then [`LEAF`] points of
 /// zeros, so that a leaf's distances can be computed over a whole leaf's
 /// worth of lanes (see `traverse::leaf`).
-fn padded(coordinates: impl ExactSizeIterator<Item = f64>) -> Vec<Lanes> {
-    let mut v = vec![Lanes([0.0; 8]); coordinates.len().div_ceil(8) + LEAF / 8];
+fn padded(coordinates: impl ExactSizeIterator<Item = f64>) -> Vec<CacheLine> {
+    let mut v = vec![CacheLine([0.0; 8]); coordinates.len().div_ceil(8) + LEAF / 8];
     for (i, c) in coordinates.enumerate() {
         v[i / 8].0[i % 8] = c;
     }

@@ -89,7 +89,7 @@ pub(crate) const LEAF: usize = 32;
 
 /// Points in the first child of a subtree of `count > LEAF` points: half,
 /// rounded to a multiple of 8, so that every leaf starts on a multiple of 8
-/// points, a cache line of each coordinate array (see [`Lanes`]). The build
+/// points, a cache line of each coordinate array (see [`CacheLine`]). The build
 /// splits by it and the walk derives the children's ranges from it.
 #[inline(always)]
 pub(crate) fn first_part(count: usize) -> usize {
@@ -101,7 +101,7 @@ pub(crate) fn first_part(count: usize) -> usize {
 /// whole lines, four per coordinate for its 32 lanes.
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(64))]
-pub(crate) struct Lanes(pub [f64; 8]);
+pub(crate) struct CacheLine(pub [f64; 8]);
 
 /// Points per index the tree can hold: indices are `u32`.
 pub const MAX_POINTS: usize = u32::MAX as usize;
@@ -208,7 +208,7 @@ pub(crate) struct Spheres {
 // and coordinate blocks, each aligned to its size.
 const _: () = assert!(size_of::<Node>() == 16 && align_of::<Node>() == 16);
 const _: () = assert!(size_of::<Spheres>() == 64 && align_of::<Spheres>() == 64);
-const _: () = assert!(size_of::<Lanes>() == 64 && align_of::<Lanes>() == 64);
+const _: () = assert!(size_of::<CacheLine>() == 64 && align_of::<CacheLine>() == 64);
 
 /// A bounding-sphere hierarchy over a set of points, answering nearest,
 /// k-nearest and within-radius queries exactly (see the [module
@@ -226,9 +226,9 @@ const _: () = assert!(size_of::<Lanes>() == 64 && align_of::<Lanes>() == 64);
 #[derive(Clone, Debug)]
 pub struct SphereBvh {
     /// The points, reordered so that every leaf is a contiguous range.
-    pub(crate) xs: Vec<Lanes>,
-    pub(crate) ys: Vec<Lanes>,
-    pub(crate) zs: Vec<Lanes>,
+    pub(crate) xs: Vec<CacheLine>,
+    pub(crate) ys: Vec<CacheLine>,
+    pub(crate) zs: Vec<CacheLine>,
     /// The original index of each reordered point.
     pub(crate) index: Vec<u32>,
     /// Item radii in tree order, for an index built from spheres; empty for

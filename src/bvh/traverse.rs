@@ -9,7 +9,7 @@
 //! `2^-1075`, which the bounds absorb).
 
 use super::sphere::UNDERFLOW_DISTANCE;
-use super::{Child, Counter, LEAF, Lanes, Node, SphereBvh, Spheres, first_part, sqrt};
+use super::{CacheLine, Child, Counter, LEAF, Node, SphereBvh, Spheres, first_part, sqrt};
 use crate::arith::exponent::unit_pow2;
 use crate::arith::roundoff::U;
 use glam::DVec3;
@@ -282,7 +282,7 @@ fn leaf<V: Visitor>(tree: &SphereBvh, start: usize, len: usize, q: DVec3, s: f64
     // padding, so the lanes past `len` read the next leaf's points (or the
     // padding) and are ignored.
     let b = start / 8;
-    fn block(a: &[Lanes], b: usize) -> Option<&[Lanes; LEAF / 8]> {
+    fn block(a: &[CacheLine], b: usize) -> Option<&[CacheLine; LEAF / 8]> {
         a.get(b..b + LEAF / 8)?.try_into().ok()
     }
     let (Some(xs), Some(ys), Some(zs)) =

@@ -6,11 +6,13 @@
 //! small-integer exact, 3 adaptive (`robust`), 4 scaled filter, 5
 //! big-integer exact.
 
+use super::sparse::{Expansion, lifted_monomials, lifted_sign, product_terms, reference};
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::magnitude::{largest_abs, zero_or_at_least};
+use crate::arith::sparse_sum::{Diff, diff};
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -174,7 +176,7 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    super::sparse::incircle(points)
+    sparse_sign(points)
         .unwrap_or_else(|| integer::<DEG1, DEG2, DEG4>(at_grain(&points, grain.lo_min)))
 }
 
@@ -185,6 +187,57 @@ fn at_grain<const D: usize>(p: &[DVec2; 4], lo: i32) -> impl Fn(usize) -> [Fixed
             FixedInt::from_f64(p[i].x, lo),
             FixedInt::from_f64(p[i].y, lo),
         ]
+    }
+}
+
+/// Stage 5, first: the exact sign of the in-circle determinant of `p` (as
+/// `predicates::incircle`), for finite input, or `None` when its terms do
+/// not fit the accumulators.
+///
+/// `incircle` is the sign of the lifted determinant `det4` of the rows `(x,
+/// y, x^2 + y^2, 1)` (with `d` as the origin, below, this is its own
+/// formula). Two expansions, whichever has fewer terms:
+/// - `det4` is translation invariant; with point `k` as the origin its row
+///   is `(0, 0, 0, 1)`, so `det4 = (-1)^(k + 1) det3` (0-based `k`,
+///   expanded along that row), `det3` the lifted 3x3 determinant of the
+///   other points minus point `k`, in order: 12 products of 4 differences,
+///   each difference one or two terms (the `k` whose differences have the
+///   fewest two-term parts is taken);
+/// - `det4` over the coordinates themselves, one term each: 24
+///   permutations, times 2 for the lift, 48 products.
+pub(super) fn sparse_sign(p: [DVec2; 4]) -> Option<Sign> {
+    let coords = p.map(|v| [v.x, v.y]);
+    let k = reference(&coords);
+    if product_terms(&incircle_translated(&coords, k)) <= 48 {
+        lifted_sign::<48, 4, 4>(incircle_translated(&coords, k), k % 2 == 0)
+    } else {
+        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&coords), false)
+    }
+}
+
+/// The products of `det3` with point `k` as the origin (see [`sparse_sign`]):
+/// the lifted 3x3 determinant expanded along the lift column, `lift_u (x_v
+/// y_w - y_v x_w)` over `(u, v, w)` cyclic, `lift_u = x_u^2 + y_u^2`.
+pub(super) fn incircle_translated(p: &[[f64; 2]; 4], k: usize) -> IncircleTranslated {
+    IncircleTranslated(core::array::from_fn(|i| {
+        let q = p[i + (i >= k) as usize];
+        [diff(q[0], p[k][0]), diff(q[1], p[k][1])]
+    }))
+}
+
+/// The rows of [`incircle_translated`].
+pub(super) struct IncircleTranslated([[Diff; 2]; 3]);
+
+impl Expansion<4> for IncircleTranslated {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; 4])) {
+        let rows = &self.0;
+        for (u, v, w) in [(0, 1, 2), (1, 2, 0), (2, 0, 1)] {
+            for c in 0..2 {
+                let (sq, v, w) = (rows[u][c], rows[v], rows[w]);
+                push(false, [sq, sq, v[0], w[1]]);
+                push(true, [sq, sq, v[1], w[0]]);
+            }
+        }
     }
 }
 

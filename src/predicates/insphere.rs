@@ -7,6 +7,7 @@
 //! filtered, 2 small-integer exact (and the lattice stage), 3 adaptive
 //! (`robust`), 4 scaled filter, 5 big-integer exact.
 
+use super::sparse::{Expansion, lifted_monomials, lifted_sign, product_terms, reference};
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2,
     small_integer, unit_scale,
@@ -14,6 +15,7 @@ use crate::arith::exponent::{
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
 use crate::arith::lanes::Pair;
 use crate::arith::magnitude::{all_within, larger, largest_abs, zero_or_at_least};
+use crate::arith::sparse_sum::{Diff, diff};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -329,7 +331,7 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> 
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    super::sparse::insphere(points)
+    sparse_sign(points)
         .unwrap_or_else(|| integer::<DEG1, DEG2, DEG3, DEG5>(at_grain(&points, grain.lo_min)))
 }
 
@@ -341,6 +343,58 @@ fn at_grain<const D: usize>(p: &[DVec3; 5], lo: i32) -> impl Fn(usize) -> [Fixed
             FixedInt::from_f64(p[i].y, lo),
             FixedInt::from_f64(p[i].z, lo),
         ]
+    }
+}
+
+/// Stage 5, first: the exact sign of the in-sphere determinant of `p` (as
+/// `predicates::insphere`), for finite input, or `None` when its terms do
+/// not fit the accumulators.
+///
+/// As for incircle's, with `det5` the lifted determinant of the rows `(x,
+/// y, z, |.|^2, 1)`: `insphere` is minus its sign (CGAL's convention, minus
+/// Shewchuk's), and it is either `(-1)^k det4`, `det4` the lifted 4x4
+/// determinant of the other points minus point `k`, in order (72 products
+/// of 5 differences), or expanded over the coordinates (120 permutations
+/// times 3, 360 products), whichever has fewer terms.
+pub(super) fn sparse_sign(p: [DVec3; 5]) -> Option<Sign> {
+    let coords = p.map(|v| [v.x, v.y, v.z]);
+    let k = reference(&coords);
+    let det5 = if product_terms(&insphere_translated(&coords, k)) <= 360 {
+        lifted_sign::<360, 5, 5>(insphere_translated(&coords, k), k % 2 == 1)
+    } else {
+        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&coords), false)
+    };
+    det5.map(|s| -s)
+}
+
+/// The products of `det4` with point `k` as the origin (see [`sparse_sign`]):
+/// the lifted 4x4 determinant expanded along the lift column, the sum over
+/// rows `i` of `(-1)^(i + 1) lift_i M(i)`, `M(i)` the 3x3 determinant of
+/// the other three rows in order, each expanded along z as in `det3`.
+pub(super) fn insphere_translated(p: &[[f64; 3]; 5], k: usize) -> InsphereTranslated {
+    InsphereTranslated(core::array::from_fn(|i| {
+        let q = p[i + (i >= k) as usize];
+        core::array::from_fn(|c| diff(q[c], p[k][c]))
+    }))
+}
+
+/// The rows of [`insphere_translated`].
+pub(super) struct InsphereTranslated([[Diff; 3]; 4]);
+
+impl Expansion<5> for InsphereTranslated {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; 5])) {
+        let rows = &self.0;
+        for i in 0..4 {
+            let o: [usize; 3] = core::array::from_fn(|j| j + (j >= i) as usize);
+            for c in 0..3 {
+                let sq = rows[i][c];
+                for (u, v, w) in [(o[0], o[1], o[2]), (o[1], o[2], o[0]), (o[2], o[0], o[1])] {
+                    let (u, v, w) = (rows[u], rows[v], rows[w]);
+                    push(i % 2 == 0, [sq, sq, u[2], v[0], w[1]]);
+                    push(i % 2 == 1, [sq, sq, u[2], w[0], v[1]]);
+                }
+            }
+        }
     }
 }
 

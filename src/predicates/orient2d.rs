@@ -12,12 +12,13 @@
     reason = "truncates values proven finite and below 2^62 to i64"
 )]
 
-use super::sparse;
+use super::sparse::cross2_of;
 use crate::arith::exponent::{
     Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::lanes::Lanes;
+use crate::arith::sparse_sum::diff;
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -220,7 +221,7 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
     }
-    sparse::orient2d(a, b, c).unwrap_or_else(|| big_integer(a, b, c, gx.lo_min, gy.lo_min))
+    sparse_sign(a, b, c).unwrap_or_else(|| big_integer(a, b, c, gx.lo_min, gy.lo_min))
 }
 
 /// Stage 2, quick entry: when each axis's significands sit within 2^9 of
@@ -256,6 +257,14 @@ fn small_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
     let x = [a.x, b.x, c.x].map(|v| to_integer_i64(v, lox));
     let y = [a.y, b.y, c.y].map(|v| to_integer_i64(v, loy));
     integer_det(x, y)
+}
+
+/// Stage 5, first: the exact sign of `(b - a) x (c - a)` for finite input, or `None` when
+/// the terms do not fit the accumulators.
+pub(super) fn sparse_sign(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
+    let b = [diff(b.x, a.x), diff(b.y, a.y)];
+    let c = [diff(c.x, a.x), diff(c.y, a.y)];
+    cross2_of(b, c)
 }
 
 /// Stage 5: each axis as integers at its finest bit, whatever the span.

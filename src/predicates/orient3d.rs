@@ -6,13 +6,14 @@
 //! (`robust`), 4 scaled filter, 5 big-integer exact.
 
 use super::det::{A, certifies, det3_wide, determinant, small_det3, stage_a_rows};
-use super::sparse;
+use super::sparse::det3;
 use crate::arith::exponent::{
     Grain, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2, unit_integers, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
 use crate::arith::magnitude::{all_within, larger, larger3};
+use crate::arith::sparse_sum::diff;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -262,7 +263,14 @@ fn exact(points: &[DVec3; 4], in_range: bool) -> Sign {
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
     }
-    sparse::orient3d(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(points, lo))
+    sparse_sign(a, b, c, d).unwrap_or_else(|| integer::<DEG1, DEG2, DEG3>(points, lo))
+}
+
+/// Stage 5, first: the exact sign of `det[b - a, c - a, d - a]` for finite input, or `None`
+/// when the terms do not fit the accumulators.
+pub(super) fn sparse_sign(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Option<Sign> {
+    let rel = |p: DVec3| [diff(p.x, a.x), diff(p.y, a.y), diff(p.z, a.z)];
+    det3(rel(b), rel(c), rel(d))
 }
 
 /// Stage 5: each axis as integers at its finest bit `lo[axis]`, the

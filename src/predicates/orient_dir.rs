@@ -7,12 +7,13 @@
 //! the exact ray–triangle cast's plane parameter (`query::ray::triangle`).
 
 use super::det::{certifies, det3_wide, small_det3, stage_a_rows};
-use super::sparse;
+use super::sparse::det3;
 use crate::arith::double_double::{SLACK, cross_dd, difference, dot_dd, in_range, row};
 use crate::arith::exponent::{Grain, to_integer_i64};
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::U;
+use crate::arith::sparse_sum::diff;
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -116,7 +117,7 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
         };
         return small_det3([int(d), rel(p), rel(q)]);
     }
-    sparse::orient_dir(d, o, p, q).unwrap_or_else(|| {
+    sparse_sign(d, o, p, q).unwrap_or_else(|| {
         // `<34, 67, 100>` holds every finite input, as in orient3d.
         let int = |v: DVec3| {
             [
@@ -132,4 +133,14 @@ fn exact(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
         };
         det3_wide::<DEG1, DEG2, DEG3>(&[int(d), rel(p), rel(q)]).sign()
     })
+}
+
+/// Stage 5, first: the exact sign of `det[d, p - o, q - o]` for finite input (a ray's
+/// direction `d` and two points seen from its origin `o`), or `None` when
+/// the terms do not fit the accumulators.
+pub(super) fn sparse_sign(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Option<Sign> {
+    let rel = |p: DVec3| [diff(p.x, o.x), diff(p.y, o.y), diff(p.z, o.z)];
+    // `d - 0` is the one exact term `d` (a zero difference has none).
+    let dir = [diff(d.x, 0.0), diff(d.y, 0.0), diff(d.z, 0.0)];
+    det3(dir, rel(p), rel(q))
 }

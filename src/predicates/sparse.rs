@@ -19,148 +19,24 @@
 //! decided by offsets near `2^-1000`, or coordinates each at its own
 //! exponent) this costs some dozens to hundreds of small integer products
 //! instead of products of dense integers thousands of bits wide.
+//!
+//! Each predicate builds its own terms beside it (`sparse_sign` in its
+//! file); this module holds what they share: the expansions of the
+//! lifted determinants, the cheapest origin, and the 2x2 and 3x3
+//! determinants of exact differences.
 
 use crate::arith::sparse_sum::{Diff, MAX_TERMS, Terms, diff, sign_of_sum};
 use crate::sign::Sign;
-use glam::{DVec2, DVec3};
-
-/// The exact sign of `(b - a) x (c - a)` for finite input, or `None` when
-/// the terms do not fit the accumulators.
-pub(super) fn orient2d(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
-    let b = [diff(b.x, a.x), diff(b.y, a.y)];
-    let c = [diff(c.x, a.x), diff(c.y, a.y)];
-    cross2_of(b, c)
-}
-
-/// The exact sign of `det[b - a, c - a, d - a]` for finite input, or `None`
-/// when the terms do not fit the accumulators.
-pub(super) fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Option<Sign> {
-    let rel = |p: DVec3| [diff(p.x, a.x), diff(p.y, a.y), diff(p.z, a.z)];
-    det3(rel(b), rel(c), rel(d))
-}
-
-/// The exact sign of `det[d, p - o, q - o]` for finite input (a ray's
-/// direction `d` and two points seen from its origin `o`), or `None` when
-/// the terms do not fit the accumulators.
-pub(super) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Option<Sign> {
-    let rel = |p: DVec3| [diff(p.x, o.x), diff(p.y, o.y), diff(p.z, o.z)];
-    // `d - 0` is the one exact term `d` (a zero difference has none).
-    let dir = [diff(d.x, 0.0), diff(d.y, 0.0), diff(d.z, 0.0)];
-    det3(dir, rel(p), rel(q))
-}
-
-/// The exact sign of the in-circle determinant of `p` (as
-/// `predicates::incircle`), for finite input, or `None` when its terms do
-/// not fit the accumulators.
-///
-/// `incircle` is the sign of the lifted determinant `det4` of the rows `(x,
-/// y, x^2 + y^2, 1)` (with `d` as the origin, below, this is its own
-/// formula). Two expansions, whichever has fewer terms:
-/// - `det4` is translation invariant; with point `k` as the origin its row
-///   is `(0, 0, 0, 1)`, so `det4 = (-1)^(k + 1) det3` (0-based `k`,
-///   expanded along that row), `det3` the lifted 3x3 determinant of the
-///   other points minus point `k`, in order: 12 products of 4 differences,
-///   each difference one or two terms (the `k` whose differences have the
-///   fewest two-term parts is taken);
-/// - `det4` over the coordinates themselves, one term each: 24
-///   permutations, times 2 for the lift, 48 products.
-pub(super) fn incircle(p: [DVec2; 4]) -> Option<Sign> {
-    let coords = p.map(|v| [v.x, v.y]);
-    let k = reference(&coords);
-    if product_terms(&incircle_translated(&coords, k)) <= 48 {
-        lifted_sign::<48, 4, 4>(incircle_translated(&coords, k), k % 2 == 0)
-    } else {
-        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&coords), false)
-    }
-}
-
-/// The products of `det3` with point `k` as the origin (see [`incircle`]):
-/// the lifted 3x3 determinant expanded along the lift column, `lift_u (x_v
-/// y_w - y_v x_w)` over `(u, v, w)` cyclic, `lift_u = x_u^2 + y_u^2`.
-fn incircle_translated(p: &[[f64; 2]; 4], k: usize) -> IncircleTranslated {
-    IncircleTranslated(core::array::from_fn(|i| {
-        let q = p[i + (i >= k) as usize];
-        [diff(q[0], p[k][0]), diff(q[1], p[k][1])]
-    }))
-}
 
 /// An expansion of a determinant into signed products of `K` differences.
-trait Expansion<const K: usize> {
+pub(super) trait Expansion<const K: usize> {
     /// Calls `push` with each signed product (`true`: negated).
     fn products(&self, push: &mut impl FnMut(bool, [Diff; K]));
 }
 
-/// The rows of [`incircle_translated`].
-struct IncircleTranslated([[Diff; 2]; 3]);
-
-impl Expansion<4> for IncircleTranslated {
-    fn products(&self, push: &mut impl FnMut(bool, [Diff; 4])) {
-        let rows = &self.0;
-        for (u, v, w) in [(0, 1, 2), (1, 2, 0), (2, 0, 1)] {
-            for c in 0..2 {
-                let (sq, v, w) = (rows[u][c], rows[v], rows[w]);
-                push(false, [sq, sq, v[0], w[1]]);
-                push(true, [sq, sq, v[1], w[0]]);
-            }
-        }
-    }
-}
-
-/// The exact sign of the in-sphere determinant of `p` (as
-/// `predicates::insphere`), for finite input, or `None` when its terms do
-/// not fit the accumulators.
-///
-/// As for [`incircle`], with `det5` the lifted determinant of the rows `(x,
-/// y, z, |.|^2, 1)`: `insphere` is minus its sign (CGAL's convention, minus
-/// Shewchuk's), and it is either `(-1)^k det4`, `det4` the lifted 4x4
-/// determinant of the other points minus point `k`, in order (72 products
-/// of 5 differences), or expanded over the coordinates (120 permutations
-/// times 3, 360 products), whichever has fewer terms.
-pub(super) fn insphere(p: [DVec3; 5]) -> Option<Sign> {
-    let coords = p.map(|v| [v.x, v.y, v.z]);
-    let k = reference(&coords);
-    let det5 = if product_terms(&insphere_translated(&coords, k)) <= 360 {
-        lifted_sign::<360, 5, 5>(insphere_translated(&coords, k), k % 2 == 1)
-    } else {
-        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&coords), false)
-    };
-    det5.map(|s| -s)
-}
-
-/// The products of `det4` with point `k` as the origin (see [`insphere`]):
-/// the lifted 4x4 determinant expanded along the lift column, the sum over
-/// rows `i` of `(-1)^(i + 1) lift_i M(i)`, `M(i)` the 3x3 determinant of
-/// the other three rows in order, each expanded along z as in `det3`.
-fn insphere_translated(p: &[[f64; 3]; 5], k: usize) -> InsphereTranslated {
-    InsphereTranslated(core::array::from_fn(|i| {
-        let q = p[i + (i >= k) as usize];
-        core::array::from_fn(|c| diff(q[c], p[k][c]))
-    }))
-}
-
-/// The rows of [`insphere_translated`].
-struct InsphereTranslated([[Diff; 3]; 4]);
-
-impl Expansion<5> for InsphereTranslated {
-    fn products(&self, push: &mut impl FnMut(bool, [Diff; 5])) {
-        let rows = &self.0;
-        for i in 0..4 {
-            let o: [usize; 3] = core::array::from_fn(|j| j + (j >= i) as usize);
-            for c in 0..3 {
-                let sq = rows[i][c];
-                for (u, v, w) in [(o[0], o[1], o[2]), (o[1], o[2], o[0]), (o[2], o[0], o[1])] {
-                    let (u, v, w) = (rows[u], rows[v], rows[w]);
-                    push(i % 2 == 0, [sq, sq, u[2], v[0], w[1]]);
-                    push(i % 2 == 1, [sq, sq, u[2], w[0], v[1]]);
-                }
-            }
-        }
-    }
-}
-
 /// The exact sign of the sum of an expansion's products, negated with
 /// `negate`; `None` when they do not fit.
-fn lifted_sign<const N: usize, const L: usize, const K: usize>(
+pub(super) fn lifted_sign<const N: usize, const L: usize, const K: usize>(
     expansion: impl Expansion<K>,
     negate: bool,
 ) -> Option<Sign> {
@@ -170,7 +46,7 @@ fn lifted_sign<const N: usize, const L: usize, const K: usize>(
 }
 
 /// How many terms the products of an expansion add up to.
-fn product_terms<const K: usize>(expansion: &impl Expansion<K>) -> usize {
+pub(super) fn product_terms<const K: usize>(expansion: &impl Expansion<K>) -> usize {
     let mut n = 0;
     expansion.products(&mut |_, f| n += f.iter().map(Diff::len).product::<usize>());
     n
@@ -181,12 +57,14 @@ fn product_terms<const K: usize>(expansion: &impl Expansion<K>) -> usize {
 /// coordinates themselves: for each permutation, `D` coordinates times one
 /// squared coordinate of the lift (`K = D + 2` factors, each the one-term
 /// "difference" `v - 0`), with the permutation's sign.
-fn lifted_monomials<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> Monomials<N, D> {
+pub(super) fn lifted_monomials<const N: usize, const D: usize>(
+    p: &[[f64; D]; N],
+) -> Monomials<N, D> {
     Monomials(p.map(|q| q.map(|x| diff(x, 0.0))))
 }
 
 /// The coordinates of [`lifted_monomials`], as one-term differences.
-struct Monomials<const N: usize, const D: usize>([[Diff; D]; N]);
+pub(super) struct Monomials<const N: usize, const D: usize>([[Diff; D]; N]);
 
 impl<const N: usize, const D: usize, const K: usize> Expansion<K> for Monomials<N, D> {
     fn products(&self, push: &mut impl FnMut(bool, [Diff; K])) {
@@ -225,7 +103,7 @@ impl<const N: usize, const D: usize, const K: usize> Expansion<K> for Monomials<
 
 /// The point whose coordinate differences to the others split into the
 /// fewest two-term parts (see [`diff`]): the cheapest origin.
-fn reference<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> usize {
+pub(super) fn reference<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> usize {
     let mut parts = [0usize; N];
     for i in 0..N {
         for j in i + 1..N {
@@ -262,6 +140,8 @@ pub(super) fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::incircle::{self, incircle_translated};
+    use super::super::insphere::{self, insphere_translated};
     use super::super::{orient2d as o2, orient3d as o3};
     use super::*;
     use crate::arith::exponent::{Grain, pow2};
@@ -269,6 +149,7 @@ mod tests {
     use crate::testing::{
         InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
     };
+    use glam::{DVec2, DVec3};
 
     /// A coordinate built to cancel: a few shared anchors at scattered
     /// exponents, moved by a few ulps or by a tiny offset, or zero.
@@ -338,11 +219,11 @@ mod tests {
         let (mut declined, mut zero) = (0, 0);
         for i in 0..60_000 {
             let (p2, p3) = case(i, &mut rng, orient2d_case, orient3d_case);
-            match orient2d(p2[0], p2[1], p2[2]) {
+            match o2::sparse_sign(p2[0], p2[1], p2[2]) {
                 Some(s) => assert_eq!(s, dense2(p2), "{p2:?}"),
                 None => declined += 1,
             }
-            match orient3d(p3[0], p3[1], p3[2], p3[3]) {
+            match o3::sparse_sign(p3[0], p3[1], p3[2], p3[3]) {
                 Some(s) => {
                     assert_eq!(s, dense3(p3), "{p3:?}");
                     zero += (s == Sign::Zero) as u32;
@@ -364,21 +245,21 @@ mod tests {
         let (mut declined, mut zero) = (0, 0);
         for i in 0..3_000 {
             let (p2, p3) = case(i, &mut rng, incircle_case, insphere_case);
-            let exact2 = super::super::incircle::dense(p2);
+            let exact2 = incircle::dense(p2);
             let c2 = p2.map(|v| [v.x, v.y]);
             let ways2: [Option<Sign>; 6] = core::array::from_fn(|k| match k {
                 0..4 => lifted_sign::<48, 4, 4>(incircle_translated(&c2, k), k % 2 == 0),
                 4 => lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&c2), false),
-                _ => incircle(p2),
+                _ => incircle::sparse_sign(p2),
             });
-            let exact3 = super::super::insphere::dense(p3);
+            let exact3 = insphere::dense(p3);
             let c3 = p3.map(|v| v.to_array());
             let ways3: [Option<Sign>; 7] = core::array::from_fn(|k| match k {
                 0..5 => {
                     lifted_sign::<360, 5, 5>(insphere_translated(&c3, k), k % 2 == 1).map(|s| -s)
                 }
                 5 => lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&c3), false).map(|s| -s),
-                _ => insphere(p3),
+                _ => insphere::sparse_sign(p3),
             });
             // The expansion over the coordinates always fits, and so does
             // the one the predicates pick; a translated one with a poor

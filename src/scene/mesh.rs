@@ -670,7 +670,7 @@ mod tests {
                     }
                 }
             }
-            // Lanes fill from the first: a node holds at least two
+            // Slots fill from the first: a node holds at least two
             // children unless it is a root leaf.
             let lanes = (0..WIDTH).filter(|&l| used(n, l)).count();
             assert!(lanes >= 2 || bvh.nodes.len() == 1);
