@@ -29,6 +29,7 @@ use crate::interval::Interval;
 
 pub(crate) mod bounded;
 pub(crate) mod certified;
+pub(crate) mod line_quadratic;
 pub(crate) mod radial;
 
 pub use bounded::BoundedRoot;

@@ -11,11 +11,10 @@ use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::{
-    BoundedFirstIn, Place, Tier, both_bounded, first_bounded_or, precise, quotient_error,
-};
-use crate::roots::certified::{
-    AllRoots, Coeffs, ETA, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
+use crate::roots::bounded::quotient_error;
+use crate::roots::certified::{ETA, SMALL_SPAN, in_filter_range, norm1};
+use crate::roots::line_quadratic::{
+    Coeffs, LineQuadratic, Question, Tier, crossings, exact_roots, first_in, line_roots,
 };
 use crate::roots::radial::{Circle, circle_of, rounded_circle, rounded_sphere};
 use crate::roots::{BoundedRoot, Roots};
@@ -50,20 +49,13 @@ impl Cylinder {
     /// assert_eq!(c.line_roots(&on_surface), Roots::All);
     /// ```
     pub fn line_roots(&self, ray: &Ray) -> Roots {
-        self.solve(ray, AllRoots)
+        line_roots(self, ray.origin(), ray.direction())
     }
 
-    /// The filtered answer to `q`, or the exact stage's.
-    #[inline]
-    fn solve<Q: Question>(&self, ray: &Ray, q: Q) -> Q::Answer {
-        let (o, d, ax) = (ray.origin(), ray.direction(), self.axis);
-        let filtered = with_fma(&Filtered {
-            o,
-            d,
-            cylinder: self,
-            q,
-        });
-        filtered.unwrap_or_else(|| q.exact_answer(exact(o, d, self.point, ax, self.radius)))
+    /// The first root in `range` from `tier`, bounded.
+    #[inline(always)]
+    fn first_in(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<BoundedRoot> {
+        first_in(self, ray.origin(), ray.direction(), range, tier)
     }
 
     /// The unit normal at `x` (on or near the surface): away from the axis.
@@ -204,7 +196,23 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize, const N8: usize>(
     )
 }
 
-impl Cylinder {
+impl LineQuadratic for Cylinder {
+    const ROUNDED: bool = true;
+
+    #[inline]
+    fn filtered<Q: Question>(&self, o: DVec3, d: DVec3, q: Q) -> Option<Q::Answer> {
+        with_fma(&Filtered {
+            o,
+            d,
+            cylinder: self,
+            q,
+        })
+    }
+
+    fn exact(&self, o: DVec3, d: DVec3) -> Roots {
+        exact(o, d, self.point, self.axis, self.radius)
+    }
+
     /// The default tier's coefficients, from rounded inputs
     /// ([`rounded_circle`]). `w = o - p` rounds once per component (`|δw|_1
     /// <= u |w|_1`). Along a coordinate axis, the circle in the other two
@@ -214,8 +222,8 @@ impl Cylinder {
     /// `|w|_1 |a|_1`), `u` also carrying `w`'s error (`u |w|_1 |a|_1`);
     /// `R^2 = r^2 |a|^2` from the pair computed when the cylinder was built.
     #[inline(always)]
-    fn rounded_coeffs(&self, ray: &Ray) -> Option<Coeffs> {
-        let (w, d) = (ray.origin() - self.point, ray.direction());
+    fn rounded(&self, o: DVec3, d: DVec3) -> Option<Coeffs> {
+        let w = o - self.point;
         if let Some(k) = self.aligned {
             let drop = |mut v: DVec3| {
                 v[k] = 0.0;
@@ -235,20 +243,6 @@ impl Cylinder {
             (rh, err + rl.abs()),
         )
     }
-
-    /// The precise tier's first root in `range`, bounded.
-    #[inline]
-    fn precise_first(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        self.solve(ray, BoundedFirstIn(range, Tier::Precise))
-    }
-
-    /// Both roots of the line in the default tier, bounded and in exact
-    /// order; `Some(None)` for a certified miss; `None` where the precise
-    /// tier decides (a near-tangent or parallel line).
-    #[inline]
-    fn bounded_line_roots(&self, ray: &Ray) -> Option<Option<[BoundedRoot; 2]>> {
-        both_bounded(&self.rounded_coeffs(ray)?)
-    }
 }
 
 impl RayCast for Cylinder {
@@ -266,9 +260,7 @@ impl RayCast for Cylinder {
     /// miss exact, `t` from the stable formula with an a-priori bound.
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        first_bounded_or(self.rounded_coeffs(ray), range, || {
-            self.precise_first(ray, range)
-        })
+        self.first_in(ray, range, Tier::Default)
     }
 }
 
@@ -284,35 +276,11 @@ impl RayCast for Precise<Cylinder> {
 
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        self.0.precise_first(ray, range)
+        self.0.first_in(ray, range, Tier::Precise)
     }
 }
 
 impl CappedCylinder {
-    /// The side's roots that a cast considers, bounded: in the default tier
-    /// those whose bound lies inside `range`, where every root's place is
-    /// decided; otherwise the precise tier's (which the cast checks
-    /// against `range` itself). A line on the infinite side has no side
-    /// crossing.
-    fn side_roots(&self, ray: &Ray, range: Interval, tier: Tier) -> [Option<BoundedRoot>; 2] {
-        if tier == Tier::Default
-            && let Some(found) = self.side.bounded_line_roots(ray)
-        {
-            let Some(roots) = found else {
-                return [None, None];
-            };
-            let places = roots.map(|root| root.place(range));
-            if !places.contains(&Place::Undecided) {
-                return [0, 1].map(|i| (places[i] == Place::Inside).then_some(roots[i]));
-            }
-        }
-        match self.side.line_roots(ray) {
-            Roots::One(t) => [Some(precise(t)), None],
-            Roots::Two(t1, t2) => [Some(precise(t1)), Some(precise(t2))],
-            Roots::None | Roots::All => [None, None],
-        }
-    }
-
     /// The first hit in `range`, with the side's roots from `tier`.
     fn cast_tier(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Hit> {
         let side = &self.side;
@@ -334,7 +302,10 @@ impl CappedCylinder {
             (0.0..=aa).contains(&h)
         };
         let side_normal = |x: DVec3| side.normal_at(x, -ray.direction());
-        for root in self.side_roots(ray, range, tier).into_iter().flatten() {
+        // The side's roots inside `range` (a line on the infinite side has
+        // none).
+        let side_roots = crossings(side, ray.origin(), ray.direction(), range, tier);
+        for root in side_roots.into_iter().flatten() {
             if on_side(root.t) {
                 consider(root.t, root.error, &side_normal);
             }

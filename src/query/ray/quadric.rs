@@ -9,9 +9,9 @@ use crate::arith::roundoff::U;
 use crate::arith::std_or_libm::fma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::{BoundedFirstIn, Tier};
-use crate::roots::certified::{
-    AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range,
+use crate::roots::certified::{ETA, SMALL_SPAN, in_filter_range};
+use crate::roots::line_quadratic::{
+    Coeffs, LineQuadratic, Polynomial, Question, Tier, exact_roots, first_in, line_roots,
 };
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Quadric;
@@ -34,20 +34,30 @@ impl Quadric {
     /// coefficients zero, gives [`Roots::All`]); roots carry the accuracy of
     /// [`Sphere::line_roots`](crate::shape::Sphere::line_roots).
     pub fn line_roots(&self, ray: &Ray) -> Roots {
-        self.solve(ray, AllRoots)
+        line_roots(self, ray.origin(), ray.direction())
     }
 
-    /// The filtered answer to `q`, or the exact stage's.
+    /// The first root in `range` from `tier`, bounded.
+    #[inline(always)]
+    fn first_in(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<BoundedRoot> {
+        first_in(self, ray.origin(), ray.direction(), range, tier)
+    }
+}
+
+/// No rounded coefficients: the default tier asks the filtered stage.
+impl LineQuadratic for Quadric {
     #[inline]
-    fn solve<Q: Question>(&self, ray: &Ray, q: Q) -> Q::Answer {
-        let (o, d) = (ray.origin(), ray.direction());
-        let filtered = with_fma(&Filtered {
+    fn filtered<Q: Question>(&self, o: DVec3, d: DVec3, q: Q) -> Option<Q::Answer> {
+        with_fma(&Filtered {
             k: &self.k,
             o,
             d,
             q,
-        });
-        filtered.unwrap_or_else(|| q.exact_answer(exact(&self.k, o, d)))
+        })
+    }
+
+    fn exact(&self, o: DVec3, d: DVec3) -> Roots {
+        exact(&self.k, o, d)
     }
 }
 
@@ -288,7 +298,7 @@ impl RayCast for Quadric {
     /// all-zero coefficients) the point of `range` nearest `t = 0`, exact.
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        self.solve(ray, BoundedFirstIn(range, Tier::Default))
+        self.first_in(ray, range, Tier::Default)
     }
 }
 
@@ -296,7 +306,7 @@ impl Quadric {
     /// The first hit in `range` from `tier`'s root.
     #[inline]
     fn cast_tier(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<Hit> {
-        hit_at(self.solve(ray, BoundedFirstIn(range, tier)), ray, |point| {
+        hit_at(self.first_in(ray, range, tier), ray, |point| {
             unit_or(self.gradient(point), -ray.direction())
         })
     }
@@ -312,6 +322,6 @@ impl RayCast for Precise<Quadric> {
 
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        self.0.solve(ray, BoundedFirstIn(range, Tier::Precise))
+        self.0.first_in(ray, range, Tier::Precise)
     }
 }

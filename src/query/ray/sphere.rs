@@ -7,8 +7,10 @@ use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::{BoundedFirstIn, Tier, first_bounded_or};
-use crate::roots::certified::{AllRoots, Coeffs, Question, SMALL_SPAN, exact_roots};
+use crate::roots::certified::SMALL_SPAN;
+use crate::roots::line_quadratic::{
+    Coeffs, LineQuadratic, Question, Tier, exact_roots, first_in, line_roots,
+};
 use crate::roots::radial::{circle_of, rounded_sphere};
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Sphere;
@@ -44,20 +46,37 @@ impl Sphere {
     /// assert_eq!(s.line_roots(&graze), Roots::None);
     /// ```
     pub fn line_roots(&self, ray: &Ray) -> Roots {
-        self.solve(ray, AllRoots)
+        line_roots(self, ray.origin(), ray.direction())
     }
 
-    /// The filtered answer to `q`, or the exact stage's.
+    /// The first root in `range` from `tier`, bounded.
+    #[inline(always)]
+    fn first_in(&self, ray: &Ray, range: Interval, tier: Tier) -> Option<BoundedRoot> {
+        first_in(self, ray.origin(), ray.direction(), range, tier)
+    }
+}
+
+impl LineQuadratic for Sphere {
+    const ROUNDED: bool = true;
+
     #[inline]
-    fn solve<Q: Question>(&self, ray: &Ray, q: Q) -> Q::Answer {
-        let (o, d) = (ray.origin(), ray.direction());
-        let filtered = with_fma(&Filtered {
+    fn filtered<Q: Question>(&self, o: DVec3, d: DVec3, q: Q) -> Option<Q::Answer> {
+        with_fma(&Filtered {
             o,
             d,
             sphere: self,
             q,
-        });
-        filtered.unwrap_or_else(|| q.exact_answer(exact(o, d, self.center, self.radius)))
+        })
+    }
+
+    fn exact(&self, o: DVec3, d: DVec3) -> Roots {
+        exact(o, d, self.center, self.radius)
+    }
+
+    /// From the rounded `w = o - c` ([`rounded_sphere`]).
+    #[inline(always)]
+    fn rounded(&self, o: DVec3, d: DVec3) -> Option<Coeffs> {
+        rounded_sphere(o - self.center, d, self.radius)
     }
 }
 
@@ -122,22 +141,6 @@ fn exact_in<const N1: usize, const N2: usize, const N4: usize>(
     exact_roots::<N2, N4>((&a, 2 * ld), (&b, lo + ld), (&cc, 2 * lo))
 }
 
-impl Sphere {
-    /// The default tier's coefficients from the rounded `w = o - c`
-    /// ([`rounded_sphere`]).
-    #[inline(always)]
-    fn rounded_coeffs(&self, ray: &Ray) -> Option<Coeffs> {
-        let (w, d) = (ray.origin() - self.center, ray.direction());
-        rounded_sphere(w, d, self.radius)
-    }
-
-    /// The precise tier's first root in `range`, bounded.
-    #[inline]
-    fn precise_first(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        self.solve(ray, BoundedFirstIn(range, Tier::Precise))
-    }
-}
-
 impl RayCast for Sphere {
     /// The first hit in `range`; the normal points away from the centre
     /// (for radius zero: against the ray).
@@ -158,9 +161,7 @@ impl RayCast for Sphere {
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
         // No fma here, so no FMA dispatch: inlined into the caller, without
         // the dispatch's call (which cost about a fifth of a cast).
-        first_bounded_or(self.rounded_coeffs(ray), range, || {
-            self.precise_first(ray, range)
-        })
+        self.first_in(ray, range, Tier::Default)
     }
 }
 
@@ -176,6 +177,6 @@ impl RayCast for Precise<Sphere> {
 
     #[inline]
     fn cast_bounded(&self, ray: &Ray, range: Interval) -> Option<BoundedRoot> {
-        self.0.precise_first(ray, range)
+        self.0.first_in(ray, range, Tier::Precise)
     }
 }

@@ -12,11 +12,12 @@ use crate::interval::Interval;
 use crate::query::ray::point_error::dot_error;
 use crate::query::ray::rim;
 use crate::query::ray::{Hit, Ray};
+use crate::roots::BoundedRoot;
 use crate::roots::bounded::{
-    Place, Tier, both_bounded, certified_negative, precise, quotient_error, stable_pair,
+    Place, Tier, both_bounded, certified_negative, quotient_error, stable_pair,
 };
 use crate::roots::certified::norm1;
-use crate::roots::{BoundedRoot, Roots};
+use crate::roots::line_quadratic::crossings;
 use crate::shape::Cone;
 use glam::DVec3;
 
@@ -51,8 +52,12 @@ impl Cone {
     /// the same power of two, exact unless the result is subnormal, where
     /// each loses at most `2^-1074` (`scale_pow2`), added to the bound.
     /// `None` where the precise tier decides.
-    fn bounded_line_roots(&self, ray: &Ray) -> Option<Option<[BoundedRoot; 2]>> {
-        let line = self.scaled(ray)?;
+    pub(super) fn bounded_line_roots(
+        &self,
+        o: DVec3,
+        d: DVec3,
+    ) -> Option<Option<[BoundedRoot; 2]>> {
+        let line = self.scaled(o, d)?;
         let found = with_fma(&BoundedLateral { line: &line })?;
         Some(found.map(|roots| {
             roots.map(|BoundedRoot { t, error }| BoundedRoot {
@@ -73,23 +78,10 @@ impl Cone {
             let (h, s) = rim::heights(ray.at(t) - self.apex, a);
             h >= 0.0 && (!self.capped || h <= s)
         };
-        if tier == Tier::Default
-            && let Some(found) = self.bounded_line_roots(ray)
-        {
-            let roots = found?;
-            let places = roots.map(|root| root.place(range));
-            if !places.contains(&Place::Undecided) {
-                return (0..2)
-                    .find(|&i| places[i] == Place::Inside && on_cone(roots[i].t))
-                    .map(|i| roots[i]);
-            }
-        }
-        let lateral = |t: f64| range.admits(t) && on_cone(t);
-        match self.line_roots(ray) {
-            Roots::One(t) => lateral(t).then(|| precise(t)),
-            Roots::Two(t1, t2) => [t1, t2].into_iter().find(|&t| lateral(t)).map(precise),
-            Roots::None | Roots::All => None,
-        }
+        crossings(self, ray.origin(), ray.direction(), range, tier)
+            .into_iter()
+            .flatten()
+            .find(|root| on_cone(root.t))
     }
 
     /// The first crossing in `range` on the cone's own nappe (below the cap

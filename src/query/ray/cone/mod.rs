@@ -20,8 +20,8 @@ use crate::arith::exponent::{pow2, scale_pow2, unit_scale};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::Tier;
-use crate::roots::certified::{AllRoots, Question, norm1};
+use crate::roots::certified::norm1;
+use crate::roots::line_quadratic::{AllRoots, LineQuadratic, Question, Tier, line_roots};
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Cone;
 use coefficients::Line;
@@ -59,17 +59,7 @@ impl Cone {
     /// inputs whose scaling is not exact), the exact stage decides the
     /// count from the coefficients as integers.
     pub fn line_roots(&self, ray: &Ray) -> Roots {
-        let (o, d) = (ray.origin(), ray.direction());
-        let filtered = self.scaled(ray).and_then(|line| {
-            let roots = with_fma(&Filtered { line: &line })?;
-            let back = |tau: f64| scale_pow2(tau, line.back);
-            Some(match roots {
-                Roots::One(t) => Roots::One(back(t)),
-                Roots::Two(t1, t2) => Roots::Two(back(t1), back(t2)),
-                other => other,
-            })
-        });
-        filtered.unwrap_or_else(|| exact(o, d, self.apex, self.axis, self.radius))
+        line_roots(self, ray.origin(), ray.direction())
     }
 
     /// The ray and the cone at their own powers of two, or `None` where a
@@ -83,10 +73,10 @@ impl Cone {
     /// in `tau = t 2^(kw - kd)` are those of the unscaled one scaled
     /// exactly, and nothing overflows wherever in `f64`'s range each group
     /// sits.
-    fn scaled(&self, ray: &Ray) -> Option<ScaledLine> {
+    fn scaled(&self, o: DVec3, d: DVec3) -> Option<ScaledLine> {
         let unit = |v: &[f64]| unit_scale(v).clamp(-1000, 1000);
-        let (wh, wl) = exact_difference(ray.origin(), self.apex);
-        let (d, a) = (ray.direction(), self.axis);
+        let (wh, wl) = exact_difference(o, self.apex);
+        let a = self.axis;
         let (kw, kd) = (unit(&[wh.x, wh.y, wh.z]), unit(&[d.x, d.y, d.z]));
         let ka = unit(&[a.x, a.y, a.z, self.radius]);
         let (fw, fd, fa) = (pow2(kw), pow2(kd), pow2(ka));
@@ -122,6 +112,33 @@ impl Cone {
         let (a, r) = (self.axis * pow2(ka), self.radius * pow2(ka));
         let (s, h) = (a.dot(a), w.dot(a));
         unit_or((w * s - a * h) * s - a * (r * r * h), fallback)
+    }
+}
+
+/// The lateral surface's quadratic, on the scaled line ([`Cone::scaled`]);
+/// the driver's questions are answered from the certified roots scaled
+/// back (exactly: the scaling is exact unless a root is subnormal, within
+/// the precise tier's bound then too).
+impl LineQuadratic for Cone {
+    #[inline]
+    fn filtered<Q: Question>(&self, o: DVec3, d: DVec3, q: Q) -> Option<Q::Answer> {
+        let line = self.scaled(o, d)?;
+        let roots = with_fma(&Filtered { line: &line })?;
+        let back = |tau: f64| scale_pow2(tau, line.back);
+        Some(q.exact_answer(match roots {
+            Roots::One(t) => Roots::One(back(t)),
+            Roots::Two(t1, t2) => Roots::Two(back(t1), back(t2)),
+            other => other,
+        }))
+    }
+
+    fn exact(&self, o: DVec3, d: DVec3) -> Roots {
+        exact(o, d, self.apex, self.axis, self.radius)
+    }
+
+    #[inline]
+    fn bounded_pair(&self, o: DVec3, d: DVec3) -> Option<Option<[BoundedRoot; 2]>> {
+        self.bounded_line_roots(o, d)
     }
 }
 

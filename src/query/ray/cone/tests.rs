@@ -10,7 +10,7 @@ use std::vec::Vec;
 /// `tau` (`w = wh + wl` as `wh - (-wl)`).
 fn scaled_case(o: DVec3, d: DVec3, apex: DVec3, a: DVec3, r: f64) -> (ScaledLine, Quadratic) {
     let cone = Cone::infinite(apex, a, r).unwrap();
-    let line = cone.scaled(&Ray::new(o, d).unwrap()).unwrap();
+    let line = cone.scaled(o, d).unwrap();
     let exact = Quadratic::cone(
         line.wh.to_array(),
         line.d.to_array(),
@@ -65,7 +65,7 @@ fn coefficient_bounds_hold() {
         let cone = Cone::new(apex, a, r).unwrap();
         let ray = Ray::new(o, d).unwrap();
         let exact = Quadratic::cone(o.into(), d.into(), apex.into(), a.into(), r);
-        let scaled = cone.scaled(&ray).unwrap();
+        let scaled = cone.scaled(ray.origin(), ray.direction()).unwrap();
         let (_, from_scaled) = scaled_case(o, d, apex, a, r);
         let lines = [
             (cone.ordinary(&ray), &exact),
