@@ -45,7 +45,7 @@ pub(crate) fn orient_dir(d: DVec3, o: DVec3, p: DVec3, q: DVec3) -> Sign {
 }
 
 /// The stage after the filter: `det[d, p - o, q - p]` in double-double
-/// (`super::double_double`), within `u |value| + 61 u^2` of its permanent,
+/// (`arith::double_double`), within `u |value| + 61 u^2` of its permanent,
 /// so its sign is certified where `64 u^2` of the permanent and the
 /// absolute slack fall below half its magnitude. Rays within a few ulps of
 /// an edge, but not on its line, end here. `None` where it cannot certify

@@ -17,7 +17,7 @@
 //!   which of the two roots a bracket holds ([`computed_count`]). A cast
 //!   that wants only the first root inside an interval certifies only the
 //!   roots it looks at ([`certified_first`]). The filtered stages run with
-//!   hardware FMA where the CPU has it (`float::with_fma`);
+//!   hardware FMA where the CPU has it (`arith::fma_dispatch::with_fma`);
 //! - **exact**: the coefficients as exact integers (`arith::fixed_int`), the
 //!   discriminant's sign exact, each coefficient rounded once to 53 bits
 //!   with an unbounded exponent ([`ScaledFloat`]) and the roots from the
@@ -110,7 +110,7 @@ pub(crate) const ETA: f64 = 3.054936363499605e-151; // 2^-500
 
 /// The exact polynomial of a cast, evaluated with a rigorous error bound.
 /// Implementations mark both methods `#[inline(always)]`: they run inside
-/// the FMA-enabled copy of the filtered stage (`float::with_fma`).
+/// the FMA-enabled copy of the filtered stage (`arith::fma_dispatch::with_fma`).
 pub(crate) trait Polynomial {
     /// Whether [`Polynomial::eval_fast`]'s bound is tight enough to be
     /// worth trying first; where it almost never certifies (the general

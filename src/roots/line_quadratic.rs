@@ -17,11 +17,18 @@
 //!   filtered stage.
 //!
 //! The bounds each stage needs are derived beside the shape's own
-//! coefficients; the driver adds no rounding of its own.
+//! coefficients; the driver adds no rounding of its own. The module also
+//! re-exports what a shape's stages are built from (the coefficients'
+//! range checks and slack, the exact roots, a quotient's error bound), so
+//! that a cast reaches `roots` through this one door; the sphere-like
+//! problems of `radial.rs` are the other, for shapes that reduce to them.
 
+pub(crate) use super::bounded::quotient_error;
 pub(crate) use super::bounded::{BoundedFirstIn, Tier};
 use super::bounded::{Place, both_bounded, first_bounded_or, precise};
-pub(crate) use super::certified::{AllRoots, Coeffs, Polynomial, Question, exact_roots};
+pub(crate) use super::certified::{
+    AllRoots, Coeffs, ETA, Polynomial, Question, SMALL_SPAN, exact_roots, in_filter_range, norm1,
+};
 use super::{BoundedRoot, Roots};
 use crate::interval::Interval;
 use glam::DVec3;

@@ -11,10 +11,9 @@ use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::arith::roundoff::{U, gamma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::bounded::quotient_error;
-use crate::roots::certified::{ETA, SMALL_SPAN, in_filter_range, norm1};
 use crate::roots::line_quadratic::{
-    Coeffs, LineQuadratic, Question, Tier, crossings, exact_roots, first_in, line_roots,
+    Coeffs, ETA, LineQuadratic, Question, SMALL_SPAN, Tier, crossings, exact_roots, first_in,
+    in_filter_range, line_roots, norm1, quotient_error,
 };
 use crate::roots::radial::{Circle, circle_of, rounded_circle, rounded_sphere};
 use crate::roots::{BoundedRoot, Roots};

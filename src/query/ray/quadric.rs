@@ -9,9 +9,9 @@ use crate::arith::roundoff::U;
 use crate::arith::std_or_libm::fma;
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::certified::{ETA, SMALL_SPAN, in_filter_range};
 use crate::roots::line_quadratic::{
-    Coeffs, LineQuadratic, Polynomial, Question, Tier, exact_roots, first_in, line_roots,
+    Coeffs, ETA, LineQuadratic, Polynomial, Question, SMALL_SPAN, Tier, exact_roots, first_in,
+    in_filter_range, line_roots,
 };
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Quadric;

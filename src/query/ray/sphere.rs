@@ -7,9 +7,8 @@ use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::certified::SMALL_SPAN;
 use crate::roots::line_quadratic::{
-    Coeffs, LineQuadratic, Question, Tier, exact_roots, first_in, line_roots,
+    Coeffs, LineQuadratic, Question, SMALL_SPAN, Tier, exact_roots, first_in, line_roots,
 };
 use crate::roots::radial::{circle_of, rounded_sphere};
 use crate::roots::{BoundedRoot, Roots};

@@ -4,7 +4,7 @@
 use crate::arith::exponent::pow2;
 use crate::arith::roundoff::gamma;
 use crate::arith::std_or_libm::fma;
-use crate::roots::certified::{Coeffs, ETA, in_filter_range, norm1};
+use crate::roots::line_quadratic::{Coeffs, ETA, in_filter_range, norm1};
 use glam::DVec3;
 
 /// `|x_j y_k| + |x_k y_j|` per component: the magnitudes of `x x y`'s

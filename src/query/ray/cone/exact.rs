@@ -4,7 +4,7 @@
 use crate::arith::exponent::Grain;
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt, cross3, limbs_of_degree};
 use crate::roots::Roots;
-use crate::roots::certified::{SMALL_SPAN, exact_roots};
+use crate::roots::line_quadratic::{SMALL_SPAN, exact_roots};
 use glam::DVec3;
 
 /// Limbs at the common grains: an input or a difference of two (below

@@ -13,11 +13,10 @@ use crate::query::ray::point_error::dot_error;
 use crate::query::ray::rim;
 use crate::query::ray::{Hit, Ray};
 use crate::roots::BoundedRoot;
-use crate::roots::bounded::{
-    Place, Tier, both_bounded, certified_negative, quotient_error, stable_pair,
-};
-use crate::roots::certified::norm1;
-use crate::roots::line_quadratic::crossings;
+// The cone's own default tier: its ordinary path works on the stable
+// pair directly (`bounded.rs`'s pieces), before the driver's crossings.
+use crate::roots::bounded::{Place, both_bounded, certified_negative, stable_pair};
+use crate::roots::line_quadratic::{Tier, crossings, norm1, quotient_error};
 use crate::shape::Cone;
 use glam::DVec3;
 

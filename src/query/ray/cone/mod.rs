@@ -20,8 +20,7 @@ use crate::arith::exponent::{pow2, scale_pow2, unit_scale};
 use crate::arith::fma_dispatch::{FmaKernel, with_fma};
 use crate::interval::Interval;
 use crate::query::ray::Ray;
-use crate::roots::certified::norm1;
-use crate::roots::line_quadratic::{AllRoots, LineQuadratic, Question, Tier, line_roots};
+use crate::roots::line_quadratic::{AllRoots, LineQuadratic, Question, Tier, line_roots, norm1};
 use crate::roots::{BoundedRoot, Roots};
 use crate::shape::Cone;
 use coefficients::Line;
@@ -54,7 +53,7 @@ impl Cone {
     /// evaluates the polynomial's coefficients with the ray and the cone at
     /// their own powers of two, bounds their errors
     /// a priori and certifies each root a posteriori, as the quadrics do
-    /// (`roots::certified`); where it cannot (near-tangent rays,
+    /// (`roots::line_quadratic`); where it cannot (near-tangent rays,
     /// rays through or near the apex, lines near a ruling's direction,
     /// inputs whose scaling is not exact), the exact stage decides the
     /// count from the coefficients as integers.

@@ -8,7 +8,7 @@ use crate::arith::double_double::{Approximate, DoubleDouble};
 use crate::arith::exponent::pow2;
 use crate::arith::roundoff::{U, gamma};
 use crate::arith::std_or_libm::fma;
-use crate::roots::certified::{ETA, Polynomial};
+use crate::roots::line_quadratic::{ETA, Polynomial};
 use crate::roots::radial::scaled_square;
 use glam::DVec3;
 

@@ -1,7 +1,7 @@
 //! The cone's bounds against exact arithmetic.
 
 use super::*;
-use crate::roots::certified::Polynomial;
+use crate::roots::line_quadratic::Polynomial;
 use crate::testing::{ConeRayClass, SplitMix64, cone_ray_case, step_ulps};
 use exactray_oracle::line_oracle::{Dyadic, Quadratic};
 use std::vec::Vec;

@@ -48,7 +48,7 @@ pub(crate) fn plane_parameter(ray: &Ray, v: &[DVec3; 3]) -> f64 {
 /// or where the quotient is not a normal number.
 ///
 /// Each determinant `x . (e1 x e2)` is within `u |value| + 61 u^2 Σ |x_i|
-/// P_i` of its value (`super::double_double`); the certificate allows
+/// P_i` of its value (`arith::double_double`); the certificate allows
 /// `128 u^2` of the permanent, which also covers the rounding of the
 /// permanents themselves, and the absolute slack for underflow.
 struct FilteredParameter<'a> {
