@@ -1415,9 +1415,9 @@ impl Line {
     }
 
     /// The line with its configuration scaled by `2^k` ([`Scaling`]), or
-    /// `None` where a scaled number would leave the normal range (a zero
-    /// stays zero). A field that does not parse is kept as it is: the
-    /// unscaled line reports it.
+    /// `None` where a scaled number is not exact (see [`scale_exactly`]).
+    /// A field that does not parse is kept as it is: the unscaled line
+    /// reports it.
     fn scaled(&self, scaling: Scaling, k: i32) -> Option<Line> {
         let fields = self.fields();
         let mut out = Vec::with_capacity(fields.len());
@@ -1425,11 +1425,7 @@ impl Line {
             let m = scaling.power(&fields, i);
             match field.parse::<f64>() {
                 Ok(x) if m != 0 && x.is_finite() => {
-                    let y = x * 2f64.powi(m * k / 2) * 2f64.powi(m * k - m * k / 2);
-                    if x != 0.0 && !y.is_normal() {
-                        return None;
-                    }
-                    out.push(format!("{y:e}"));
+                    out.push(format!("{:e}", scale_exactly(x, m * k)?));
                 }
                 _ => out.push(field.to_string()),
             }
@@ -1440,6 +1436,22 @@ impl Line {
             fields: out,
         })
     }
+}
+
+/// `x 2^e` where that is exact and normal (a zero stays zero), or `None`:
+/// the product, rounded, must be a normal number and scale back to `x`
+/// exactly. A value just below a power of two can round up to `2^-1022`
+/// (normal, but not `x 2^e`). The check itself never rounds where it
+/// matters: scaling up is exact (below overflow), and scaling a normal
+/// `y` down to a normal `x` passes only through normal values between
+/// them; a subnormal `x` is only ever scaled up, exactly.
+fn scale_exactly(x: f64, e: i32) -> Option<f64> {
+    let scale = |v: f64, e: i32| v * 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+    if x == 0.0 {
+        return Some(x);
+    }
+    let y = scale(x, e);
+    (y.is_normal() && scale(y, -e) == x).then_some(y)
 }
 
 /// Runs `check` on `lines` (one file's cases, or a scaled copy's) at scale
@@ -1815,6 +1827,20 @@ fn scaled_copies_scale_the_configuration_only() {
     // Out of the normal range: left out.
     assert_eq!(scaled("orient2d", "1e300 0 0 1 1 0 1", 100), None);
     assert_eq!(scaled("orient2d", "1e-300 0 0 1 1 0 1", -100), None);
+    // 2^-22 less one ulp times 2^-1000 rounds up to 2^-1022, a normal
+    // number that is not the scaled value: left out; 2^-22 itself scales.
+    let below = 2f64.powi(-22).next_down();
+    assert_eq!(below, 2.3841857910156247e-07);
+    assert_eq!(below * 2f64.powi(-500) * 2f64.powi(-500), f64::MIN_POSITIVE);
+    assert_eq!(scale_exactly(below, -1000), None);
+    assert_eq!(
+        scale_exactly(2f64.powi(-22), -1000),
+        Some(f64::MIN_POSITIVE)
+    );
+    assert_eq!(
+        scaled("orient2d", "2.3841857910156247e-07 0 0 1 1 0 1", -1000),
+        None
+    );
     let mesh = [
         "v 1e300 0 0",
         "v 0 1 0",

@@ -2,8 +2,9 @@
 //! force with the exact oracle (`exactray_oracle::mesh_oracle`, `docs/fixture-format.md`'s
 //! `ray_mesh` rule): the exact closest hit (hit or miss, a triangle
 //! containing the exact first point, `t` within `EXACT_T_ULPS`), exact
-//! occlusion, and the exact shadow segment; the watertight queries must
-//! not panic and must report only admitted `t`.
+//! occlusion, and the exact shadow segment (its far end drawn up to
+//! `f64::MAX` of either sign at times); the watertight queries must not
+//! panic, must report only admitted `t` and answer every finite segment.
 //!
 //! A mesh is 3 to 8 vertices on a small integer lattice scaled by `2^k` for
 //! a `k` from -1000 to 1000 (or raw bit patterns), and 1 to 8 triangles
@@ -160,15 +161,27 @@ fuzz_target!(|data: &[u8]| {
         }
     }
     // The segment from o to o + d (rounded: the segment is from o to
-    // whatever q is).
-    let q = o + d;
-    if (q - o).is_finite() && q != o {
+    // whatever q is), or to a far end drawn over the whole range, up to
+    // f64::MAX of either sign (ends farther apart than f64::MAX among them).
+    let q = match u8::arbitrary(&mut u).unwrap_or(0) % 4 {
+        0 => {
+            let c = <[i8; 3]>::arbitrary(&mut u).unwrap_or([0; 3]);
+            DVec3::from_array(c.map(|x| f64::MAX * (f64::from(x) / 127.0)))
+        }
+        1 => DVec3::from_array(
+            <[u64; 3]>::arbitrary(&mut u)
+                .unwrap_or([0; 3])
+                .map(finite_f64_from_bits),
+        ),
+        _ => o + d,
+    };
+    if q.is_finite() && q != o {
         let blocked = mesh_oracle::segment_mesh(o.to_array(), q.to_array(), &verts, &tris);
         assert_eq!(
             mesh.occluded_between_with::<Exact>(o, q),
             Ok(blocked),
             "{o:?} {q:?}"
         );
-        let _ = mesh.occluded_between(o, q);
+        assert!(mesh.occluded_between(o, q).is_ok(), "{o:?} {q:?}");
     }
 });

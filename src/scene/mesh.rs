@@ -43,8 +43,9 @@
 //! [`Exact`]: crate::query::ray::Exact
 //! [`Watertight`]: crate::query::ray::Watertight
 
-use super::{shading, spawn};
-use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk};
+use super::shading;
+use super::spawn::Segment;
+use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk, walk_halved_segment};
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -362,15 +363,22 @@ impl TriangleMesh {
     /// meet). Both ends count; the walk stops at the first triangle met.
     /// Never allocates.
     ///
-    /// The boxes are culled with the ray `p + t fl(q - p)`, widened by one
-    /// more rounding than a ray query's (`traverse.rs`): the exact
-    /// segment's slab parameters are the ray's times `1 + δ`, `|δ| <= u`,
-    /// so no box the exact segment meets is culled.
+    /// Every pair of finite ends is a segment: where `q - p` overflows
+    /// (ends on opposite sides of the range, farther apart than
+    /// `f64::MAX` on some axis) the ray is `p + t d'` for `t` in `[0, 2]`,
+    /// `d'` the difference halved (each half exact there) and rounded, so
+    /// its end is again `q` up to one rounding of the difference.
+    ///
+    /// The boxes are culled with that ray, widened by one more rounding
+    /// than a ray query's (`traverse.rs`): the exact segment's slab
+    /// parameters are the ray's times `1 + δ`, `|δ| <= u`, so no box the
+    /// exact segment meets is culled. A halved difference may also round
+    /// a tiny coordinate by `2^-1075`; that walk moves every box bound one
+    /// more step outward, which covers it.
     ///
     /// # Errors
     /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
-    /// infinite coordinate, or `"direction"` when `q - p` overflows. `p ==
-    /// q` is no segment: `Ok(false)`.
+    /// infinite coordinate. `p == q` is no segment: `Ok(false)`.
     ///
     /// [`Exact`]: crate::query::ray::Exact
     pub fn occluded_between_with<T: TriangleTest>(
@@ -378,19 +386,38 @@ impl TriangleMesh {
         p: impl IntoDVec3,
         q: impl IntoDVec3,
     ) -> Result<bool, InputError> {
-        let q = q.into_dvec3();
-        let Some((ray, unit)) = spawn::segment(p, q)? else {
-            return Ok(false);
-        };
+        Ok(Segment::new(p, q)?.is_some_and(|s| self.meets_segment::<T>(&s)))
+    }
+
+    /// Whether `segment` meets the mesh with the triangle test `T`: the
+    /// walk of [`TriangleMesh::occluded_between_with`].
+    pub(super) fn meets_segment<T: TriangleTest>(&self, segment: &Segment) -> bool {
         let mut v = SegmentHit::<T> {
             mesh: self,
-            ray: &ray,
-            prepared: T::prepare_segment(&ray),
-            q,
+            segment,
+            prepared: T::prepare_segment(&segment.ray),
             found: false,
         };
-        walk::<_, 1>(&self.bvh, &ray, unit, &mut v);
-        Ok(v.found)
+        walk_segment(&self.bvh, segment, segment.range(), &mut v);
+        v.found
+    }
+}
+
+/// The walk over `bvh` that keeps every box `segment`'s exact segment
+/// meets for the parameters `range`: one more rounding of the slab
+/// parameters than a ray's, and every bound one more step outward for a
+/// halved direction ([`Segment`]).
+#[inline]
+pub(super) fn walk_segment<V: Visitor>(
+    bvh: &BoxBvh,
+    segment: &Segment,
+    range: Interval,
+    v: &mut V,
+) {
+    if segment.halved {
+        walk_halved_segment(bvh, &segment.ray, range, v);
+    } else {
+        walk::<_, 1>(bvh, &segment.ray, range, v);
     }
 }
 
@@ -513,9 +540,8 @@ impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
 
 struct SegmentHit<'a, T: TriangleTest> {
     mesh: &'a TriangleMesh,
-    ray: &'a Ray,
+    segment: &'a Segment,
     prepared: T::Prepared,
-    q: DVec3,
     found: bool,
 }
 
@@ -524,18 +550,15 @@ impl<T: TriangleTest> Visitor for SegmentHit<'_, T> {
 
     #[inline]
     fn max(&self) -> f64 {
-        1.0
+        self.segment.end()
     }
 
     #[inline]
     fn leaf(&mut self, triangles: &[u32]) -> bool {
+        let s = self.segment;
         self.found = triangles.iter().any(|&index| {
-            T::segment_hit(
-                self.ray,
-                &self.prepared,
-                self.q,
-                &self.mesh.leaf_shape(index),
-            )
+            let tri = self.mesh.leaf_shape(index);
+            T::segment_hit(&s.ray, &self.prepared, s.q, s.range(), &tri)
         });
         self.found
     }

@@ -4,6 +4,8 @@
 //! [`Scene`]'s docs give the rule its queries follow and what its
 //! hierarchy guarantees.
 
+use super::mesh::walk_segment;
+use super::spawn::Segment;
 use super::{MeshHit, TriangleMesh};
 use crate::arith::roundoff::gamma;
 use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk};
@@ -446,26 +448,15 @@ impl<T: TriangleTest> Visitor for Closest<'_, '_, T> {
     }
 }
 
-struct AnyHit<'a, T: TriangleTest> {
-    scene: &'a Scene,
-    ray: &'a Ray,
-    range: Interval,
+/// The any-hit visitor: the walk stops at the first primitive `blocks`
+/// says is met (by a ray, or by a segment).
+struct AnyHit<F> {
     max: f64,
     found: bool,
-    test: PhantomData<T>,
+    blocks: F,
 }
 
-impl<T: TriangleTest> AnyHit<'_, T> {
-    #[inline]
-    fn blocks(&self, id: u32) -> bool {
-        match &self.scene.primitives[id as usize] {
-            Primitive::Mesh(mesh) => mesh.occluded_with::<T>(self.ray, self.range),
-            Primitive::Shape(shape) => shape.hits(self.ray, self.range),
-        }
-    }
-}
-
-impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
+impl<F: FnMut(u32) -> bool> Visitor for AnyHit<F> {
     const ORDERED: bool = false;
 
     #[inline]
@@ -475,7 +466,7 @@ impl<T: TriangleTest> Visitor for AnyHit<'_, T> {
 
     #[inline]
     fn leaf(&mut self, ids: &[u32]) -> bool {
-        self.found = ids.iter().any(|&id| self.blocks(id));
+        self.found = ids.iter().any(|&id| (self.blocks)(id));
         self.found
     }
 }
@@ -565,13 +556,13 @@ impl Scene {
     /// hit (a shape's [`RayCast::hits`], a mesh's
     /// [`TriangleMesh::occluded_with`]). Never allocates.
     pub fn occluded_with<T: TriangleTest>(&self, ray: &Ray, range: Interval) -> bool {
-        let mut v = AnyHit::<T> {
-            scene: self,
-            ray,
-            range,
+        let mut v = AnyHit {
             max: widen(range.max(), 1.0),
             found: false,
-            test: PhantomData,
+            blocks: |id: u32| match &self.primitives[id as usize] {
+                Primitive::Mesh(mesh) => mesh.occluded_with::<T>(ray, range),
+                Primitive::Shape(shape) => shape.hits(ray, range),
+            },
         };
         if !v.leaf(&self.unbounded) {
             walk::<_, 0>(&self.bvh, ray, walked(range), &mut v);
@@ -585,15 +576,51 @@ impl Scene {
     /// surface use [`spawn_ray_to`](super::spawn_ray_to).
     ///
     /// # Errors
-    /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
-    /// infinite coordinate, or `"direction"` when `q - p` overflows. `p ==
-    /// q` is no segment: `Ok(false)`.
+    /// As [`Scene::occluded_between_with`].
+    #[inline]
     pub fn occluded_between(
         &self,
         p: impl IntoDVec3,
         q: impl IntoDVec3,
     ) -> Result<bool, InputError> {
-        Ok(super::spawn::segment(p, q)?.is_some_and(|(ray, range)| self.occluded(&ray, range)))
+        self.occluded_between_with::<Watertight>(p, q)
+    }
+
+    /// Whether the segment from `p` to `q` meets the scene, its meshes
+    /// with the triangle test `T` as
+    /// [`TriangleMesh::occluded_between_with`] decides (with [`Exact`],
+    /// on the exact segment) and its shapes with their own
+    /// [`RayCast::hits`] on the segment's ray. Every pair of finite ends
+    /// is a segment (a difference that overflows is halved, as there).
+    /// Both ends count; the walk stops at the first primitive met. Never
+    /// allocates.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
+    /// infinite coordinate. `p == q` is no segment: `Ok(false)`.
+    ///
+    /// [`Exact`]: crate::query::ray::Exact
+    pub fn occluded_between_with<T: TriangleTest>(
+        &self,
+        p: impl IntoDVec3,
+        q: impl IntoDVec3,
+    ) -> Result<bool, InputError> {
+        let Some(segment) = Segment::new(p, q)? else {
+            return Ok(false);
+        };
+        let s = &segment;
+        let mut v = AnyHit {
+            max: widen(s.end(), 1.0),
+            found: false,
+            blocks: |id: u32| match &self.primitives[id as usize] {
+                Primitive::Mesh(mesh) => mesh.meets_segment::<T>(s),
+                Primitive::Shape(shape) => shape.hits(&s.ray, s.range()),
+            },
+        };
+        if !v.leaf(&self.unbounded) {
+            walk_segment(&self.bvh, &segment, walked(segment.range()), &mut v);
+        }
+        Ok(v.found)
     }
 }
 

@@ -75,13 +75,17 @@ pub fn spawn_ray(hit: &Hit, direction: impl IntoDVec3) -> Result<Ray, InputError
 }
 
 /// A ray from the surface of `hit` towards `point`, and the parameter
-/// range `[0, 1)` that covers the segment up to the point (excluded: the
-/// largest double below 1 is the bound): a shadow ray. The origin is
-/// offset as by [`spawn_ray`], to the side the point lies on; the
-/// direction is `point - origin`, rounded, so `origin + direction` is
-/// `point` up to that rounding. A point on another surface is within
-/// rounding of that surface at `t` near 1: offset it too (spawn from both
-/// ends) where that matters.
+/// range that covers the segment up to the point, the point excluded: a
+/// shadow ray. The origin is offset as by [`spawn_ray`], to the side the
+/// point lies on; the direction is `point - origin`, rounded, and the
+/// range `[0, 1)` (the largest double below 1 is the bound), so `origin +
+/// direction` is `point` up to that rounding. Where that difference
+/// overflows (a point on the far side of the range from the hit) the
+/// direction is half of it, rounded as a segment's is
+/// ([`TriangleMesh::occluded_between`](super::TriangleMesh::occluded_between)),
+/// and the range `[0, 2)`. A point on another surface is within rounding
+/// of that surface at the end of the range: offset it too (spawn from
+/// both ends) where that matters.
 ///
 /// ```
 /// use exactray::prelude::*;
@@ -99,41 +103,109 @@ pub fn spawn_ray(hit: &Hit, direction: impl IntoDVec3) -> Result<Ray, InputError
 ///
 /// # Errors
 /// [`InputError::NonFinite`] naming `"point"` for a NaN or infinite
-/// point, `"origin"` for a hit whose error is infinite, `"direction"` when
-/// the difference overflows; [`InputError::ZeroDirection`] when the point
-/// is the offset origin.
+/// point, `"origin"` for a hit whose error is infinite;
+/// [`InputError::ZeroDirection`] when the point is the offset origin.
 pub fn spawn_ray_to(hit: &Hit, point: impl IntoDVec3) -> Result<(Ray, Interval), InputError> {
     let q = point.into_dvec3();
     if !q.is_finite() {
         return Err(InputError::NonFinite { argument: "point" });
     }
-    let origin = offset_origin(hit, q - hit.point);
-    let ray = Ray::new(origin, q - origin)?;
-    Ok((ray, Interval::new(0.0, 1.0f64.next_down())?))
+    if !hit.point.is_finite() {
+        return Err(InputError::NonFinite { argument: "origin" });
+    }
+    let origin = offset_origin(hit, difference(hit.point, q).0);
+    let (d, halved) = difference(origin, q);
+    let ray = Ray::new(origin, d)?;
+    let end = if halved { 2.0 } else { 1.0 };
+    Ok((ray, Interval::new(0.0, f64::next_down(end))?))
 }
 
-/// The segment from `p` to `q` as the ray `p + t fl(q - p)` and the range
-/// `[0, 1]` (its end is `q` up to the rounding of the difference), or
-/// `None` for `p == q`: what `occluded_between` asks of a mesh or a
-/// scene.
+/// A segment between two finite points as the ray the walks and the
+/// rounded triangle tests read, with the parameters that cover it.
 ///
-/// # Errors
-/// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or infinite
-/// coordinate, or `"direction"` when `q - p` overflows.
-pub(super) fn segment(
-    p: impl IntoDVec3,
-    q: impl IntoDVec3,
-) -> Result<Option<(Ray, Interval)>, InputError> {
-    let (p, q) = (p.into_dvec3(), q.into_dvec3());
-    if !p.is_finite() {
-        return Err(InputError::NonFinite { argument: "p" });
+/// Where `q - p` is finite the ray is `p + t fl(q - p)` over `[0, 1]`, as
+/// it always was. Where it overflows (the ends are finite but on opposite
+/// sides of the range, `|q_k - p_k| > f64::MAX` on some axis) the ray is
+/// `p + t d'` over `[0, 2]`, with the halved difference `d'_k = fl(q_k -
+/// p_k) / 2` on the axes where that difference is finite and `fl(q_k / 2
+/// - p_k / 2)` on the others:
+///
+/// - on an axis that overflows both ends exceed `2^970` in magnitude (a
+///   difference above `f64::MAX` needs it), so their halves are exact and
+///   `d'_k` is `(q_k - p_k) / 2` times `1 + δ`, `|δ| <= u`;
+/// - on another axis `fl(q_k - p_k)` is the difference times `1 + δ`, and
+///   halving it is exact unless it is below `2^-1021`, where the
+///   difference itself was exact (it is a multiple of `2^-1074` below
+///   `2^53` of them) and the halving rounds once, by at most `2^-1075`.
+///
+/// So `d'_k = (q_k - p_k) / 2 (1 + δ) + η` with `|δ| <= u` and `|η| <=
+/// 2^-1075`, never both non-zero: over `t` in `[0, 2]` the ray strays
+/// from the exact segment `p + t (q - p) / 2` by the relative rounding of
+/// one difference, as an ordinary segment's ray does, and by at most
+/// `2^-1074` per axis more. The halved walk
+/// (`bvh::boxes::walk_halved_segment`) covers that by one more step
+/// outward on every box bound.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Segment {
+    /// The ray `p + t d` (`d = fl(q - p)`, or `d'` above).
+    pub(crate) ray: Ray,
+    /// The exact far end `q`.
+    pub(crate) q: DVec3,
+    /// Whether the direction is the halved difference: the parameters are
+    /// `[0, 2]`, not `[0, 1]`.
+    pub(crate) halved: bool,
+}
+
+impl Segment {
+    /// The segment from `p` to `q`, or `None` for `p == q`: what
+    /// `occluded_between` asks of a mesh or a scene.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] naming `"p"` or `"q"` for a NaN or
+    /// infinite coordinate.
+    pub(crate) fn new(p: impl IntoDVec3, q: impl IntoDVec3) -> Result<Option<Segment>, InputError> {
+        let (p, q) = (p.into_dvec3(), q.into_dvec3());
+        if !p.is_finite() {
+            return Err(InputError::NonFinite { argument: "p" });
+        }
+        if !q.is_finite() {
+            return Err(InputError::NonFinite { argument: "q" });
+        }
+        let (d, halved) = difference(p, q);
+        match Ray::new(p, d) {
+            Ok(ray) => Ok(Some(Segment { ray, q, halved })),
+            Err(InputError::ZeroDirection) => Ok(None),
+            Err(e) => Err(e),
+        }
     }
-    if !q.is_finite() {
-        return Err(InputError::NonFinite { argument: "q" });
+
+    /// The parameters that cover the segment, both ends included: `[0,
+    /// 1]`, or `[0, 2]` for a halved direction.
+    #[inline]
+    pub(crate) fn range(&self) -> Interval {
+        Interval::new(0.0, self.end()).unwrap_or(Interval::FORWARD)
     }
-    match Ray::new(p, q - p) {
-        Ok(ray) => Ok(Some((ray, Interval::new(0.0, 1.0)?))),
-        Err(InputError::ZeroDirection) => Ok(None),
-        Err(e) => Err(e),
+
+    /// The parameter of the far end: 1, or 2 for a halved direction.
+    #[inline]
+    pub(crate) fn end(&self) -> f64 {
+        if self.halved { 2.0 } else { 1.0 }
     }
+}
+
+/// `fl(q - p)` and `false` where it is finite (finite ends), otherwise
+/// the halved difference of [`Segment`]'s docs and `true`.
+fn difference(p: DVec3, q: DVec3) -> (DVec3, bool) {
+    let d = q - p;
+    if d.is_finite() {
+        return (d, false);
+    }
+    let half = |k: usize| {
+        if d[k].is_finite() {
+            d[k] * 0.5
+        } else {
+            q[k] * 0.5 - p[k] * 0.5
+        }
+    };
+    (DVec3::new(half(0), half(1), half(2)), true)
 }

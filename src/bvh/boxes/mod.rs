@@ -27,7 +27,7 @@ mod wide;
 pub(crate) use build::Item;
 #[cfg(feature = "ploc")]
 pub use ploc::PlocQuality;
-pub(crate) use traverse::{Visitor, walk};
+pub(crate) use traverse::{Visitor, walk, walk_halved_segment};
 #[cfg(test)]
 pub(crate) use wide::WIDTH;
 pub(crate) use wide::WideNode;

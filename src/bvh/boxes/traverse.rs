@@ -42,6 +42,18 @@
 //! bounds are widened too: a closest-hit query compares certified
 //! parameters within `4u` of the exact ones, and `W` covers that as well.
 //!
+//! Where an origin coordinate exceeds `2^969` in magnitude, `b - o_k`
+//! may overflow for a finite bound on the other side of the range (below
+//! `2^969`, `|b - o_k| < f64::MAX + 2^970`, which rounds to at most
+//! `f64::MAX`). On such an axis the slab is computed as `2 fl(fl(fl(b /
+//! 2) - o_k / 2) * fl(1 / d_k))` (or `/ d_k`): `o_k / 2` is exact, the
+//! doubling exact unless it overflows (an entry beyond `f64::MAX`, as
+//! above), and `fl(b / 2)` off by at most `2^-1075` where `b` is below
+//! `2^-1021`, which next to `|o_k / 2| > 2^968` is a relative error below
+//! `2^-2040` of the difference: `θ` grows by less than `2^-2039`, far
+//! inside the margin between `gamma(3) / (1 - gamma(3))` and `gamma(4)`
+//! (about `u`). The bound and the widening are unchanged.
+//!
 //! A segment query culls with the ray `p + t fl(q - p)` for its exact
 //! segment from `p` to `q`: each exact slab parameter `(b - p_k) / (q_k -
 //! p_k)` is the ray's `(b - p_k) / fl(q_k - p_k)` times `1 + δ`, `|δ| <= u`
@@ -163,6 +175,11 @@ const SLACK: f64 = f64::from_bits(1 << 4);
 /// The absolute widening `S` of the frame test, `2^-126`.
 const SLACK_32: f32 = f32::MIN_POSITIVE;
 
+/// The origin coordinate above which the world test halves `b - o_k`,
+/// `2^969`: below it no difference with a finite bound overflows (see the
+/// module docs).
+const HALVE_ABOVE: f64 = pow2(969);
+
 /// The frame test's limit on the origin's frame coordinates and on the
 /// reciprocals of the scaled direction, `2^48` (see the module docs).
 const FRAME_LIMIT: f64 = pow2(48);
@@ -254,9 +271,24 @@ impl<const E: u32> BoxRay<E> {
             };
             let o = self.origin[k];
             let (d, inv) = (self.direction[k], self.inv[k]);
-            let t = |b: f64| if DIVIDE { (b - o) / d } else { (b - o) * inv };
-            let lo: [f64; WIDTH] = core::array::from_fn(|l| t(enter[l]));
-            let hi: [f64; WIDTH] = core::array::from_fn(|l| t(exit[l]));
+            let (lo, hi): ([f64; WIDTH], [f64; WIDTH]) = if o.abs() > HALVE_ABOVE {
+                // `b - o` may overflow: halved (see the module docs).
+                let o = o * 0.5;
+                let t = |b: f64| {
+                    let x = b * 0.5 - o;
+                    2.0 * if DIVIDE { x / d } else { x * inv }
+                };
+                (
+                    core::array::from_fn(|l| t(enter[l])),
+                    core::array::from_fn(|l| t(exit[l])),
+                )
+            } else {
+                let t = |b: f64| if DIVIDE { (b - o) / d } else { (b - o) * inv };
+                (
+                    core::array::from_fn(|l| t(enter[l])),
+                    core::array::from_fn(|l| t(exit[l])),
+                )
+            };
             // A NaN bound (the origin on a face of a zero-direction slab)
             // fails the comparison and is dropped, as `f64::max` and
             // `f64::min` would drop it (`near` and `far` are never NaN);
@@ -279,13 +311,14 @@ impl<const E: u32> BoxRay<E> {
 }
 
 /// The world test over a hierarchy's nodes: the ray and the frame its
-/// boxes are taken out of.
-struct World<'a, const E: u32, const DIVIDE: bool> {
+/// boxes are taken out of; with `PAD`, every bound one more step outward
+/// (a halved segment's, [`walk_halved_segment`]).
+struct World<'a, const E: u32, const DIVIDE: bool, const PAD: bool = false> {
     ray: BoxRay<E>,
     frame: &'a Frame,
 }
 
-impl<const E: u32, const DIVIDE: bool> Slabs for World<'_, E, DIVIDE> {
+impl<const E: u32, const DIVIDE: bool, const PAD: bool> Slabs for World<'_, E, DIVIDE, PAD> {
     type T = f64;
 
     #[inline(always)]
@@ -296,9 +329,16 @@ impl<const E: u32, const DIVIDE: bool> Slabs for World<'_, E, DIVIDE> {
     #[inline(always)]
     fn lanes(&self, node: &WideNode, min: f64, max: f64) -> ([f64; WIDTH], u32) {
         let f = self.frame;
-        let lo =
-            core::array::from_fn(|k| core::array::from_fn(|l| f.world_down(node.min[k][l], k)));
-        let hi = core::array::from_fn(|k| core::array::from_fn(|l| f.world_up(node.max[k][l], k)));
+        let down = |b: f32, k: usize| {
+            let x = f.world_down(b, k);
+            if PAD { x.next_down() } else { x }
+        };
+        let up = |b: f32, k: usize| {
+            let x = f.world_up(b, k);
+            if PAD { x.next_up() } else { x }
+        };
+        let lo = core::array::from_fn(|k| core::array::from_fn(|l| down(node.min[k][l], k)));
+        let hi = core::array::from_fn(|k| core::array::from_fn(|l| up(node.max[k][l], k)));
         self.ray.world_lanes::<DIVIDE>(&lo, &hi, min, max)
     }
 
@@ -547,6 +587,34 @@ pub(crate) fn walk<V: Visitor, const E: u32>(bvh: &BoxBvh, ray: &Ray, range: Int
         walk_in(bvh, &World::<E, true> { ray: r, frame }, range, v);
     } else {
         walk_in(bvh, &World::<E, false> { ray: r, frame }, range, v);
+    }
+}
+
+/// [`walk`] for a segment whose ray has the halved difference of its
+/// ends as direction (`scene::spawn::Segment`), over `range` within `[0,
+/// 2]`: the ray strays from the exact segment by one relative rounding
+/// of each direction coordinate (the `E = 1` widening, as for any
+/// segment) and by at most `2^-1074` per axis more (a halved coordinate
+/// below `2^-1021` rounded once, by at most `2^-1075`, times `t <= 2`). A
+/// point of the exact segment inside an exact box is then within
+/// `2^-1074` per axis of the ray's point at the same `t`, inside the box
+/// grown by `2^-1074` on every side, which one more `next_down` or
+/// `next_up` of each world bound (a step of at least `2^-1074`) covers;
+/// the world test then keeps it as it keeps any box its segment meets.
+/// The frame test is not used: its bounds are `f32` steps of the frame,
+/// which may be far finer than `2^-1074` in world units. Rare (only ends
+/// beyond `f64::MAX` apart take it), so one test, unspecialised.
+#[inline(never)]
+pub(crate) fn walk_halved_segment<V: Visitor>(bvh: &BoxBvh, ray: &Ray, range: Interval, v: &mut V) {
+    if bvh.nodes.is_empty() {
+        return;
+    }
+    let r = BoxRay::<1>::of(ray);
+    let frame = &bvh.frame;
+    if r.divide {
+        walk_in(bvh, &World::<1, true, true> { ray: r, frame }, range, v);
+    } else {
+        walk_in(bvh, &World::<1, false, true> { ray: r, frame }, range, v);
     }
 }
 

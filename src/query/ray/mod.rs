@@ -12,6 +12,7 @@
 //! reports the whole line, returns such roots as infinities of their sign.
 
 use crate::arith::exponent::{pow2, unit_pow2};
+use crate::arith::std_or_libm::fma;
 use crate::error::InputError;
 use crate::interval::Interval;
 use crate::point::IntoDVec3;
@@ -80,9 +81,23 @@ impl Ray {
 
     /// The point at parameter `t`, `origin + t * direction`, rounded
     /// (each coordinate within one rounding of a product and one of a sum).
+    /// Where the product overflows but the point does not (a point far
+    /// along a ray whose direction is near `f64::MAX`), that coordinate is
+    /// the fused `fma(t, d_k, o_k)`, one rounding of the exact value.
     #[inline]
     pub fn at(&self, t: f64) -> DVec3 {
-        self.origin + self.direction * t
+        let p = self.origin + self.direction * t;
+        if p.is_finite() {
+            return p;
+        }
+        let fused = |k: usize| {
+            if p[k].is_finite() {
+                p[k]
+            } else {
+                fma(t, self.direction[k], self.origin[k])
+            }
+        };
+        DVec3::new(fused(0), fused(1), fused(2))
     }
 }
 

@@ -47,11 +47,28 @@ pub(crate) fn dot_error(x: DVec3, n: DVec3) -> f64 {
 /// `|o_k + fl(d_k t)| <= |p_k| / (1 - u)`. So the error is at most `|d_k|
 /// et + u |d_k t| + gamma(1) |p_k| + 2^-1075`, taken with `1 + gamma(6)`
 /// for the bound's own roundings.
+///
+/// A coordinate computed as `fma(t, d_k, o_k)` ([`Ray::at`], where `d_k
+/// t` overflows) has one rounding, `δ1 = η1 = 0`: the same bound holds.
+/// Where the bound's own `|d_k t|` overflows, it is evaluated a quarter
+/// scale: `|d_k| / 4` and `|p_k| / 4` rounded up (the bound grows with
+/// both), the result times 4, exact or infinite.
 #[inline]
 pub(crate) fn point_error(ray: &Ray, t: f64, point: DVec3, et: f64) -> DVec3 {
     if !et.is_finite() {
         return DVec3::INFINITY;
     }
     let d = ray.direction().abs();
-    (d * et + gamma(1) * (d * t.abs() + point.abs())) * (1.0 + gamma(6)) + DVec3::splat(UNDERFLOW)
+    let e = bound(d, t, point.abs(), et);
+    if e.is_finite() || !point.is_finite() {
+        return e;
+    }
+    let quarter = |x: DVec3| (x * 0.25).to_array().map(f64::next_up).into();
+    bound(quarter(d), t, quarter(point.abs()), et) * 4.0
+}
+
+/// [`point_error`]'s bound for `|d|` and `|p|`.
+#[inline(always)]
+fn bound(d: DVec3, t: f64, p: DVec3, et: f64) -> DVec3 {
+    (d * et + gamma(1) * (d * t.abs() + p)) * (1.0 + gamma(6)) + DVec3::splat(UNDERFLOW)
 }

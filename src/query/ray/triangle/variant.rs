@@ -84,18 +84,24 @@ pub trait TriangleTest {
     }
 
     /// Whether the segment from `ray.origin()` to `q` meets `tri`, with
-    /// `ray` the ray `p + t fl(q - p)` (and `prepared` its setup from
-    /// [`TriangleTest::prepare_segment`]). The
-    /// default: a hit of the ray for `t` in `[0, 1]` whose certified `t` is
-    /// in `[0, 1]`, so the far end is `p + fl(q - p)`, within a rounding of
-    /// `q`. [`Exact`] decides on the exact segment.
+    /// `ray` the ray that covers it over `range` (and `prepared` its setup
+    /// from [`TriangleTest::prepare_segment`]): `p + t fl(q - p)` over
+    /// `[0, 1]`, or, where `q - p` overflows, `p + t d'` over `[0, 2]`
+    /// with `d'` the halved difference, rounded. The default: a hit of
+    /// the ray in `range` whose certified `t` is in `range`, so the far
+    /// end is `q` up to the rounding of the difference. [`Exact`] decides
+    /// on the exact segment.
     #[inline(always)]
-    fn segment_hit(ray: &Ray, prepared: &Self::Prepared, q: DVec3, tri: &Triangle) -> bool {
+    fn segment_hit(
+        ray: &Ray,
+        prepared: &Self::Prepared,
+        q: DVec3,
+        range: Interval,
+        tri: &Triangle,
+    ) -> bool {
         let _ = q;
-        let Ok(unit) = Interval::new(0.0, 1.0) else {
-            return false;
-        };
-        Self::hit(prepared, tri, unit).is_some_and(|h| unit.admits(Self::certified_t(ray, tri, &h)))
+        Self::hit(prepared, tri, range)
+            .is_some_and(|h| range.admits(Self::certified_t(ray, tri, &h)))
     }
 }
 
@@ -218,7 +224,13 @@ impl TriangleTest for Exact {
 
     /// [`Triangle::meets_segment_exact`] from the ray's origin to `q`.
     #[inline]
-    fn segment_hit(ray: &Ray, _prepared: &ExactRay, q: DVec3, tri: &Triangle) -> bool {
+    fn segment_hit(
+        ray: &Ray,
+        _prepared: &ExactRay,
+        q: DVec3,
+        _range: Interval,
+        tri: &Triangle,
+    ) -> bool {
         tri.meets_segment_exact(ray.origin(), q)
     }
 }
