@@ -416,3 +416,50 @@ fn nearest_points_across_the_range() {
         }
     }
 }
+
+/// Shapes whose boxes reach past `f64::MAX` (a sphere of radius `MAX / 2`
+/// centred at `0.9 MAX`): the scene's box is infinite on that side and
+/// still culls nothing it must keep.
+#[test]
+fn shapes_whose_boxes_overflow() {
+    let mut b = SceneBuilder::new();
+    let big = Sphere::new([0.9 * MAX, 0.0, 0.0], MAX / 2.0).unwrap();
+    b.add(big).unwrap();
+    b.add(Sphere::new([-0.9 * MAX, 0.0, 0.0], 1.0).unwrap())
+        .unwrap();
+    let scene = b.build();
+    let ray = Ray::new([-MAX, 0.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
+    let hit = scene.closest_hit(&ray, Interval::FORWARD).unwrap();
+    assert_eq!(hit.primitive.0, 1);
+    let ray = Ray::new([0.0, -MAX, 0.0], [0.0, MAX, 0.0]).unwrap();
+    assert!(scene.closest_hit(&ray, Interval::FORWARD).is_none());
+    let ray = Ray::new([0.9 * MAX, -MAX, 0.0], [0.0, MAX, 0.0]).unwrap();
+    let hit = scene.closest_hit(&ray, Interval::FORWARD).unwrap();
+    assert_eq!(hit.primitive.0, 0);
+    assert!(
+        hit.hit.point.is_finite() && hit.hit.error.is_finite(),
+        "{hit:?}"
+    );
+    assert!(
+        scene
+            .occluded_between([0.9 * MAX, -MAX, 0.0], [0.9 * MAX, MAX, 0.0])
+            .unwrap()
+    );
+}
+
+/// A surface at `f64::MAX` itself: a ray leaving it outwards has no
+/// finite origin off the surface, a typed error; inwards it leaves.
+#[test]
+fn spawning_at_the_end_of_the_range() {
+    let vertices = [[MAX, -1.0, -1.0], [MAX, 1.0, -1.0], [MAX, 0.0, 1.0]];
+    let mesh = TriangleMesh::new(&vertices, &[[0, 1, 2]]).unwrap();
+    let ray = Ray::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
+    let hit = mesh.closest_hit(&ray, Interval::FORWARD).unwrap().hit;
+    assert!(hit.point.is_finite());
+    let back = exactray::scene::spawn_ray(&hit, [-1.0, 0.0, 0.0]).unwrap();
+    assert!(!mesh.occluded(&back, Interval::FORWARD));
+    assert_eq!(
+        exactray::scene::spawn_ray(&hit, [1.0, 0.0, 0.0]),
+        Err(exactray::InputError::NonFinite { argument: "origin" })
+    );
+}

@@ -67,8 +67,9 @@ fn offset_origin(hit: &Hit, w: DVec3) -> DVec3 {
 /// # Errors
 /// As [`Ray::new`]: [`InputError::NonFinite`] naming `"direction"` for a
 /// NaN or infinite direction and `"origin"` for a hit whose error is
-/// infinite (no certified point to leave from);
-/// [`InputError::ZeroDirection`] for a zero direction.
+/// infinite (no certified point to leave from) or a hit within its error
+/// of `±f64::MAX` left outward (no finite origin lies off the surface
+/// there); [`InputError::ZeroDirection`] for a zero direction.
 pub fn spawn_ray(hit: &Hit, direction: impl IntoDVec3) -> Result<Ray, InputError> {
     let w = direction.into_dvec3();
     Ray::new(offset_origin(hit, w), w)
@@ -103,7 +104,7 @@ pub fn spawn_ray(hit: &Hit, direction: impl IntoDVec3) -> Result<Ray, InputError
 ///
 /// # Errors
 /// [`InputError::NonFinite`] naming `"point"` for a NaN or infinite
-/// point, `"origin"` for a hit whose error is infinite;
+/// point, `"origin"` as for [`spawn_ray`];
 /// [`InputError::ZeroDirection`] when the point is the offset origin.
 pub fn spawn_ray_to(hit: &Hit, point: impl IntoDVec3) -> Result<(Ray, Interval), InputError> {
     let q = point.into_dvec3();
