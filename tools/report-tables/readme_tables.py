@@ -24,6 +24,7 @@ import json
 import math
 import re
 import sys
+import textwrap
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -599,6 +600,34 @@ BLOCKS = {
 
 BLOCK = re.compile(r"(<!-- report:([a-z0-9-]+) -->\n)(.*?)(<!-- /report:\2 -->)", re.S)
 
+LONG_LINE = 300
+# A line that Markdown would read as the start of a new block.
+BLOCK_START = re.compile(r"^([-*+>#|]|\d+[.)])(\s|$)")
+
+
+def wrap_long(text, width=72):
+    """Prose lines longer than LONG_LINE characters (a run's notes, a
+    summary) wrapped at `width`, list items with a hanging indent; tables,
+    code and shorter lines as they are. No continuation line starts what
+    Markdown would read as a new block."""
+    out, code = [], False
+    for line in text.split("\n"):
+        if line.lstrip().startswith("```"):
+            code = not code
+        if code or line.lstrip().startswith("|") or len(line) <= LONG_LINE:
+            out.append(line)
+            continue
+        lead = re.match(r"^(\s*)((?:[-*]|\d+\.)\s+)?", line)
+        lead = lead.group(1) + (lead.group(2) or "")
+        w = textwrap.TextWrapper(width=width, initial_indent=lead, subsequent_indent=" " * len(lead),
+                                 break_long_words=False, break_on_hyphens=False)
+        lines = w.wrap(line[len(lead):])
+        while any(BLOCK_START.match(x.lstrip()) for x in lines[1:]):
+            w.width += 1
+            lines = w.wrap(line[len(lead):])
+        out.extend(lines)
+    return "\n".join(out)
+
 
 def rewrite(text, rep, page):
     """`text` with every block regenerated; the names it holds."""
@@ -609,7 +638,7 @@ def rewrite(text, rep, page):
         if name not in BLOCKS:
             sys.exit(f"{page}: unknown block '{name}' (known: {', '.join(BLOCKS)})")
         names.append(name)
-        return m.group(1) + BLOCKS[name](rep).rstrip("\n") + "\n" + m.group(4)
+        return m.group(1) + wrap_long(BLOCKS[name](rep).rstrip("\n")) + "\n" + m.group(4)
 
     return BLOCK.sub(fill, text), names
 
