@@ -27,12 +27,30 @@
 //!   strategies and `Arbitrary` input types for users' own tests;
 //!   [`prelude`]: the vocabulary in one `use`.
 //!
+//! # Exact variants
+//! The predicates are always exact. Ray casts come in a default tier and
+//! an exact one, both in the [`prelude`]:
+//!
+//! - Triangles: [`Triangle::cast`](shape::Triangle), and the plain
+//!   `closest_hit` of meshes and scenes, use the watertight test
+//!   ([`Watertight`](query::ray::Watertight)): a ray through a shared edge
+//!   never slips between its two triangles, but a ray within a few ulps
+//!   of an edge may get a different answer than the exact one. The exact
+//!   hit or miss is [`Exact`](query::ray::Exact) (`closest_hit_with::<Exact>`
+//!   on a mesh or scene), [`Triangle::cast_exact`](shape::Triangle::cast_exact),
+//!   and [`ExactRay`](query::ray::ExactRay) for one ray against many
+//!   triangles.
+//! - Quadrics (spheres, cylinders, cones, general quadrics): `cast`
+//!   decides hit or miss exactly and bounds the root's error a priori;
+//!   [`Precise`](query::ray::Precise) gives the same hits with every root
+//!   within 4 ulps.
+//!
 //! A speed-against-error report measures all of it beside the crates a
 //! user would otherwise pick (see the README).
 //!
 //! ```
 //! use exactray::prelude::*;
-//! use glam::DVec3;
+//! use exactray::glam::DVec3; // the glam the API takes
 //! let (x0, x1, x2) = (DVec3::ZERO, DVec3::X, DVec3::Y);
 //! assert_eq!(orient3d(x0, x1, x2, DVec3::Z), Sign::Positive);
 //! assert_eq!(same_side(x0, x1, x2, DVec3::Z, -DVec3::Z), SideRelation::Opposite);
@@ -118,6 +136,12 @@ mod sign;
 #[cfg(any(test, feature = "testing"))]
 #[cfg_attr(docsrs, doc(cfg(feature = "testing")))]
 pub mod testing;
+
+/// The vector crate of the public API, re-exported: `exactray::glam` is
+/// the glam version exactray was built with (0.34), so `DVec2` and `DVec3`
+/// values made through it are always the ones the API takes, whatever
+/// glam version the rest of a project depends on.
+pub use glam;
 
 pub use error::InputError;
 pub use point::{IntoDVec2, IntoDVec3};

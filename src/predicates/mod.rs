@@ -23,9 +23,35 @@
 //!   `side_of_oriented_sphere`). Shewchuk's `insphere` assumes his opposite
 //!   orientation, so it equals `-sign(robust::insphere(a, b, c, d, e))`.
 //!
-//! Code written against the `robust` crate (Shewchuk's conventions, `f64`
-//! returns) can use [`robust_compat`] instead: the same interface on these
-//! exact signs, switched with one `use` line.
+//! So **`orient3d` and `insphere` here have the opposite sign of
+//! `robust`'s**; `orient2d` and `incircle` have the same. Code written
+//! against the `robust` crate (Shewchuk's conventions, `f64` returns) can
+//! use [`robust_compat`] instead: `robust`'s interface and signs on these
+//! exact answers, switched with one `use` line.
+//!
+//! The two cannot be mixed up by accident: these functions return a
+//! [`Sign`], which does not compare with an `f64`, so `robust`'s
+//! `orient3d(..) > 0.0` does not compile on them, and converting `robust`'s
+//! value is a visible step ([`Sign::of_f64`], negated for `orient3d` and
+//! `insphere`):
+//!
+//! ```
+//! use exactray::Sign;
+//! use exactray::predicates::{orient3d, robust_compat};
+//!
+//! let (a, b, c, d) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+//! let p = |[x, y, z]: [f64; 3]| robust_compat::Coord3D { x, y, z };
+//! let shewchuk = robust_compat::orient3d(p(a), p(b), p(c), p(d));
+//! assert!(shewchuk < 0.0);
+//! assert_eq!(orient3d(a, b, c, d), Sign::Positive);
+//! assert_eq!(orient3d(a, b, c, d), -Sign::of_f64(shewchuk));
+//! ```
+//!
+//! ```compile_fail,E0308
+//! use exactray::predicates::orient3d;
+//! // Shewchuk's test on CGAL's sign: a type error, not a silent flip.
+//! let above = orient3d([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]) > 0.0;
+//! ```
 //!
 //! # Non-finite input
 //! The plain functions never panic. On a NaN or infinite coordinate they

@@ -24,6 +24,7 @@ import json
 import math
 import re
 import sys
+import textwrap
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -79,10 +80,12 @@ def ratio_sig(a, b, n=3):
 
 def share(errors, cases):
     """`0`, or the wrong share: one decimal from 0.1%, else two significant
-    digits (0.035%)."""
+    digits (0.035%); `>99.9%` for nearly all but not all."""
     if errors == 0:
         return "0"
     p = 100.0 * errors / cases
+    if errors < cases and p >= 99.95:
+        return ">99.9%"  # not all: one decimal would round it to 100.0%
     return f"{p:.1f}%" if p >= 0.1 else sig(p, 2) + "%"
 
 
@@ -193,8 +196,46 @@ def run_header(rep):
     return "\n\n".join(out)
 
 
+# The predicates' input classes in two groups: inputs whose products stay
+# in f64's range (where Shewchuk's adaptive arithmetic, robust's, is exact)
+# and inputs whose products underflow or overflow.
+IN_RANGE = ["uniform", "near-degenerate", "degenerate"]
+OUT_OF_RANGE = ["tiny", "huge", "mixed"]
+
+
+def readme_predicates(rep):
+    """One row per predicate: exactray's wrong answers over every class,
+    robust's per class in each group, and the other peers' per group."""
+
+    def per_class(family, method, classes):
+        return " / ".join(share(r["errors"], r["cases"]) if r else "-"
+                          for r in (rep.row(family, method, c) for c in classes))
+
+    def group(family, methods, classes, only_wrong):
+        parts = []
+        for m in methods:
+            rs = [r for r in (rep.row(family, m, c) for c in classes) if r]
+            e, c = sum(r["errors"] for r in rs), sum(r["cases"] for r in rs)
+            if c and (e or not only_wrong):
+                parts.append(f"{m} {share(e, c)}")
+        return ", ".join(parts) if parts else "none wrong"
+
+    others = [m for m in PREDICATE_PEERS if m != "robust"] + ["naive"]
+    rows = []
+    for f in PREDICATES:
+        e, c = rep.total(f, "exactray")
+        if not c:
+            continue
+        rows.append([f"`{f}`", share(e, c), per_class(f, "robust", IN_RANGE), per_class(f, "robust", OUT_OF_RANGE),
+                     group(f, others, IN_RANGE, only_wrong=True), group(f, others, OUT_OF_RANGE, only_wrong=False)])
+    return table(["predicate", "exactray, every class", "robust: ordinary / near-degenerate / degenerate",
+                  "robust: tiny / huge / mixed", "others wrong: ordinary, near-degenerate, degenerate",
+                  "others wrong: tiny, huge, mixed"], rows)
+
+
 def readme_exactness(rep):
-    """One row per question: exactray's wrong answers and the peers'."""
+    """The predicates per input class, then one row per other question:
+    exactray's wrong answers and the peers'."""
     rows = []
 
     def others(family, methods, inputs=None):
@@ -209,10 +250,6 @@ def readme_exactness(rep):
                 parts.append(f"{m} {share(e, c)}")
         return ", ".join(parts)
 
-    for f in PREDICATES:
-        e, c = rep.total(f, "exactray")
-        if c:
-            rows.append([f"`{f}`, every class", share(e, c), others(f, PREDICATE_PEERS + ["naive"])])
     for label, family, inputs, ours, peers in [
         ("nearest point, near-ties", "nearest", "near-ties:10000", "exactray", ["kiddo", "rstar"]),
         ("ray–sphere, far origins", "ray_sphere", "far", "exactray", ["parry3d", "naive"]),
@@ -234,7 +271,7 @@ def readme_exactness(rep):
                  if any(r["errors"] >= r["cases"] for r in rep.rows if r["family"] == "delaunay" and r["method"] == m)]
         rows.append(["Delaunay triangulation, tiny/huge/mixed magnitudes", share(e, c),
                      ", ".join(f"{m}: no valid output on some sets" for m in fails)])
-    return table(["question", "exactray wrong", "others wrong"], rows)
+    return readme_predicates(rep) + "\n\n" + table(["question", "exactray wrong", "others wrong"], rows)
 
 
 def readme_speed(rep):
@@ -563,6 +600,34 @@ BLOCKS = {
 
 BLOCK = re.compile(r"(<!-- report:([a-z0-9-]+) -->\n)(.*?)(<!-- /report:\2 -->)", re.S)
 
+LONG_LINE = 300
+# A line that Markdown would read as the start of a new block.
+BLOCK_START = re.compile(r"^([-*+>#|]|\d+[.)])(\s|$)")
+
+
+def wrap_long(text, width=72):
+    """Prose lines longer than LONG_LINE characters (a run's notes, a
+    summary) wrapped at `width`, list items with a hanging indent; tables,
+    code and shorter lines as they are. No continuation line starts what
+    Markdown would read as a new block."""
+    out, code = [], False
+    for line in text.split("\n"):
+        if line.lstrip().startswith("```"):
+            code = not code
+        if code or line.lstrip().startswith("|") or len(line) <= LONG_LINE:
+            out.append(line)
+            continue
+        lead = re.match(r"^(\s*)((?:[-*]|\d+\.)\s+)?", line)
+        lead = lead.group(1) + (lead.group(2) or "")
+        w = textwrap.TextWrapper(width=width, initial_indent=lead, subsequent_indent=" " * len(lead),
+                                 break_long_words=False, break_on_hyphens=False)
+        lines = w.wrap(line[len(lead):])
+        while any(BLOCK_START.match(x.lstrip()) for x in lines[1:]):
+            w.width += 1
+            lines = w.wrap(line[len(lead):])
+        out.extend(lines)
+    return "\n".join(out)
+
 
 def rewrite(text, rep, page):
     """`text` with every block regenerated; the names it holds."""
@@ -573,7 +638,7 @@ def rewrite(text, rep, page):
         if name not in BLOCKS:
             sys.exit(f"{page}: unknown block '{name}' (known: {', '.join(BLOCKS)})")
         names.append(name)
-        return m.group(1) + BLOCKS[name](rep).rstrip("\n") + "\n" + m.group(4)
+        return m.group(1) + wrap_long(BLOCKS[name](rep).rstrip("\n")) + "\n" + m.group(4)
 
     return BLOCK.sub(fill, text), names
 
