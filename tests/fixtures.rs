@@ -1122,14 +1122,16 @@ fn crate_mesh_setup(file: &MeshFile) -> Result<CrateMesh, String> {
 /// triangles listed) in a closed part of the mesh (every edge of every
 /// listed triangle shared by exactly two triangles: a closed fan around
 /// the point) and the ray crosses the surface there (every listed triangle
-/// faces the ray on the same side, exactly: the fan's projection along the
-/// ray covers the point, where its guarantee holds). A ray lying in the
+/// faces the ray on the same side, exactly, once the fan is taken in one
+/// orientation: the fan's projection along the ray covers the point, where
+/// its guarantee holds; [`oriented_alike`]). A ray lying in the
 /// plane of a listed triangle, and a ray touching a silhouette edge or
 /// vertex (the fan folds: its triangles face the ray on different sides,
 /// and the shared edge's one rounded sign puts the ray outside all of
 /// them or inside), it may call a miss (documented in `scene`).
 ///
-/// `s`: `occluded_between_with::<Exact>` must equal `blocked`.
+/// `s`: `occluded_between_with::<Exact>` must equal `blocked`, and the
+/// watertight `occluded_between` must answer.
 fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result<Verdict, String> {
     match q {
         MeshQuery::Ray { o, d, want } => {
@@ -1163,7 +1165,9 @@ fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result
                     })
                     .collect();
                 let in_plane = lines.iter().any(|l| l.coplanar);
-                let crosses = lines.iter().all(|l| l.front == lines[0].front);
+                let fronts: Vec<bool> = lines.iter().map(|l| l.front).collect();
+                let crosses = oriented_alike(&file.triangles, tris, &fronts)
+                    .is_some_and(|f| f.iter().all(|&x| x == f[0]));
                 if !in_plane && crosses && m.mesh.closest_hit(&ray, Interval::FORWARD).is_none() {
                     return Ok(Verdict::Mismatch {
                         expected: format!("a watertight hit at the shared point of {tris:?}"),
@@ -1178,6 +1182,8 @@ fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result
                 .mesh
                 .occluded_between_with::<Exact>(*p, *q)
                 .map_err(|e| e.to_string())?;
+            // The watertight segment answers every finite pair too.
+            m.mesh.occluded_between(*p, *q).map_err(|e| e.to_string())?;
             Ok(verdict(
                 got == *blocked,
                 format!("blocked {blocked}"),
@@ -1185,6 +1191,44 @@ fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result
             ))
         }
     }
+}
+
+/// The side each listed triangle faces the ray on (`fronts`, by each
+/// triangle's own vertex order), taken in one orientation of the fan:
+/// a triangle that runs an edge it shares with another in the same
+/// direction is oriented against it, so its side is flipped. Then the
+/// ray crosses the fan (its triangles lie around the point in the ray's
+/// projection) exactly when every side agrees; a silhouette (the fan
+/// folded) has both. `None` where the listed triangles are not joined by
+/// shared edges.
+fn oriented_alike(triangles: &[[u32; 3]], tris: &[usize], fronts: &[bool]) -> Option<Vec<bool>> {
+    let edges = |i: usize| {
+        let t = triangles[tris[i]];
+        [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
+    };
+    let mut flip: Vec<Option<bool>> = vec![None; tris.len()];
+    flip[0] = Some(false);
+    for _ in 0..tris.len() {
+        for i in 0..tris.len() {
+            let Some(fi) = flip[i] else { continue };
+            for j in 0..tris.len() {
+                if flip[j].is_some() {
+                    continue;
+                }
+                for (a, b) in edges(i) {
+                    if edges(j).contains(&(a, b)) {
+                        flip[j] = Some(!fi);
+                    } else if edges(j).contains(&(b, a)) {
+                        flip[j] = Some(fi);
+                    }
+                }
+            }
+        }
+    }
+    flip.iter()
+        .zip(fronts)
+        .map(|(f, &front)| f.map(|f| front != f))
+        .collect()
 }
 
 fn crate_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
@@ -1855,4 +1899,26 @@ fn scaled_copies_scale_the_configuration_only() {
     assert_eq!(left_out, 2);
     let (copy, left_out) = scaled_copy(kind("ray_mesh"), &lines, -100);
     assert_eq!((copy.len(), left_out), (6, 0));
+}
+
+/// The fan's orientation: a neighbour running the shared edge the other
+/// way keeps its side, one running it the same way has it flipped; a
+/// triangle joined by no shared edge leaves the fan without one.
+#[test]
+fn fans_are_taken_in_one_orientation() {
+    let triangles = [[0, 1, 2], [0, 2, 3], [2, 0, 4], [5, 6, 7], [3, 0, 4]];
+    assert_eq!(
+        oriented_alike(&triangles, &[0, 1], &[true, true]),
+        Some(vec![true, true])
+    );
+    assert_eq!(
+        oriented_alike(&triangles, &[0, 2], &[true, false]),
+        Some(vec![true, true])
+    );
+    // Around vertex 0: the third joined to the fan through the second only.
+    assert_eq!(
+        oriented_alike(&triangles, &[0, 1, 4], &[true, true, false]),
+        Some(vec![true, true, true])
+    );
+    assert_eq!(oriented_alike(&triangles, &[0, 3], &[true, true]), None);
 }

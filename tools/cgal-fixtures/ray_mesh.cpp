@@ -647,6 +647,55 @@ void common_sections(MeshFile& f, int spread, bool closed, bool coplanar, int n)
   }
 }
 
+// Across the whole range: a mesh at 2^971 (ends of the lattice at
+// +-(2^53 - 1) 2^971 = +-f64::MAX), queries whose ends lie on opposite
+// sides of it, through a vertex or edge point X exactly: a ray from X - D
+// along D 2^-k (t = 2^k), a segment from X - D to X + D, or either moved
+// by a lattice offset (mostly missing). |D| >= 2^52 on one axis, so that
+// the segment's q - p (2 D 2^971) overflows.
+I3 across(Rng& r, const I3& X) {
+  // Room for an offset of up to 2^46 on every coordinate.
+  const int64_t lim = (int64_t(1) << 53) - 1 - (int64_t(1) << 47);
+  I3 D;
+  for (int k = 0; k < 3; ++k) {
+    int64_t room = lim - std::llabs(X[k]);
+    D[k] = r.range(-room, room);
+  }
+  int a = int(r.next() % 3);
+  D[a] = r.sign() * r.range(int64_t(1) << 52, lim - std::llabs(X[a]));
+  return D;
+}
+
+int ray_across(MeshFile& f, Rng& r, const I3& X) {
+  const LatticeMesh& m = f.mesh();
+  I3 D = across(r, X);
+  I3 off = r.chance(30) ? bits3(r, 46) : I3{0, 0, 0};
+  return f.ray(m.at(add3(sub3(X, D), off)), lattice3(D, m.e - int(r.range(0, 4)))) ? 1 : 0;
+}
+
+int segment_across(MeshFile& f, Rng& r, const I3& X) {
+  const LatticeMesh& m = f.mesh();
+  I3 D = across(r, X);
+  I3 off = r.chance(40) ? bits3(r, 46) : I3{0, 0, 0};
+  return f.segment(m.at(add3(sub3(X, D), off)), m.at(add3(add3(X, D), off))) ? 1 : 0;
+}
+
+void write_range_mesh(const std::string& outdir, int n) {
+  LatticeMesh m = octasphere(1, int64_t(1) << 43, 971);
+  m.name = "range";
+  m.what = "an octahedron subdivided once (32 triangles; closed), radius 1.5 2^1019, rays and segments from one end "
+           "of the range to the other";
+  MeshFile f(m);
+  Rng r = f.section("rays-across", "rays from beyond 2^1020 on one side through a vertex or edge point, or offset", "hm");
+  repeat(f, r, n, [&](Rng& r) { return ray_across(f, r, r.chance(50) ? vertex_point(r, m) : edge_point(r, m)); });
+  r = f.section("segments-across",
+                "segments between ends on opposite sides of the range (q - p overflows), through a vertex or edge "
+                "point, or offset",
+                "bf");
+  repeat(f, r, n, [&](Rng& r) { return segment_across(f, r, r.chance(50) ? vertex_point(r, m) : edge_point(r, m)); });
+  f.finish(outdir);
+}
+
 // Writes ray_mesh-<name>.txt: the mesh and its common sections.
 void write_mesh(const std::string& outdir, LatticeMesh m, const char* name, const char* what, int spread, bool closed,
                 bool coplanar, int n) {
@@ -689,6 +738,7 @@ void gen_ray_mesh_files(const std::string& outdir) {
   write_mesh(outdir, nested, "nested",
              "two octahedra subdivided once, radii 24 and 24 (1 - 2^-20): one inside the other, 64 triangles", 26,
              true, false, 30);
+  write_range_mesh(outdir, 40);
 }
 
 }  // namespace fixtures
