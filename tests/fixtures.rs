@@ -104,10 +104,13 @@ enum Scaling {
     Tagged(&'static [Tag]),
 }
 
-/// A line tag of a [`Scaling::Tagged`] kind.
+/// A line tag of a [`Scaling::Tagged`] kind: `count` coordinates after
+/// the tag, scaled by `2^k`, then `squared` fields scaled by `2^2k`
+/// (squared distances).
 struct Tag {
     tag: &'static str,
     count: usize,
+    squared: usize,
     set: bool,
 }
 
@@ -122,9 +125,15 @@ impl Scaling {
                 12..15 => -1,
                 _ => 0,
             },
-            Scaling::Tagged(_) => self
-                .tag(fields)
-                .map_or(0, |t| i32::from((1..=t.count).contains(&i))),
+            Scaling::Tagged(_) => self.tag(fields).map_or(0, |t| {
+                if (1..=t.count).contains(&i) {
+                    1
+                } else if (t.count + 1..=t.count + t.squared).contains(&i) {
+                    2
+                } else {
+                    0
+                }
+            }),
         }
     }
 
@@ -157,11 +166,46 @@ const NEAREST_TAGS: &[Tag] = &[
     Tag {
         tag: "p",
         count: 3,
+        squared: 0,
         set: true,
     },
     Tag {
         tag: "q",
         count: 3,
+        squared: 0,
+        set: false,
+    },
+];
+
+/// `mesh_side`: `v x y z` (the set), `f i j k`, `p x y z side`.
+const MESH_SIDE_TAGS: &[Tag] = &[
+    Tag {
+        tag: "v",
+        count: 3,
+        squared: 0,
+        set: true,
+    },
+    Tag {
+        tag: "p",
+        count: 3,
+        squared: 0,
+        set: false,
+    },
+];
+
+/// `mesh_closest`: `v x y z` (the set), `f i j k`, `p x y z d2 tri ...`
+/// (`d2` a squared distance).
+const MESH_CLOSEST_TAGS: &[Tag] = &[
+    Tag {
+        tag: "v",
+        count: 3,
+        squared: 0,
+        set: true,
+    },
+    Tag {
+        tag: "p",
+        count: 3,
+        squared: 1,
         set: false,
     },
 ];
@@ -172,16 +216,19 @@ const RAY_MESH_TAGS: &[Tag] = &[
     Tag {
         tag: "v",
         count: 3,
+        squared: 0,
         set: true,
     },
     Tag {
         tag: "r",
         count: 6,
+        squared: 0,
         set: false,
     },
     Tag {
         tag: "s",
         count: 6,
+        squared: 0,
         set: false,
     },
 ];
@@ -298,6 +345,20 @@ const KINDS: &[Kind] = &[
         predicate: Some(WholeFile(crate_ray_mesh)),
         oracle: Some(WholeFile(oracle_ray_mesh)),
         scaling: Scaling::Tagged(RAY_MESH_TAGS),
+    },
+    Kind {
+        name: "mesh_side",
+        min_fields: 4,
+        predicate: None,
+        oracle: None,
+        scaling: Scaling::Tagged(MESH_SIDE_TAGS),
+    },
+    Kind {
+        name: "mesh_closest",
+        min_fields: 4,
+        predicate: None,
+        oracle: None,
+        scaling: Scaling::Tagged(MESH_CLOSEST_TAGS),
     },
 ];
 
@@ -926,6 +987,16 @@ enum MeshQuery {
         q: [f64; 3],
         blocked: bool,
     },
+    /// `p x y z side` (`mesh_side`): `1` inside, `0` on the boundary, `-1`
+    /// outside.
+    Side { p: [f64; 3], side: i8 },
+    /// `p x y z d2 tri ...` (`mesh_closest`): the least squared distance,
+    /// rounded, and every triangle at exactly it, strictly ascending.
+    Closest {
+        p: [f64; 3],
+        d2: f64,
+        tris: Vec<usize>,
+    },
 }
 
 /// A `ray_mesh` file: `v x y z` vertices and `f i j k` triangles (each
@@ -955,6 +1026,19 @@ fn parse_flag(field: &str, what: &str) -> Result<bool, String> {
         "1" => Ok(true),
         _ => Err(format!("bad {what} {field:?} (want 0 or 1)")),
     }
+}
+
+/// Triangle indices, strictly ascending.
+fn ascending_indices(fields: &[&str]) -> Result<Vec<usize>, String> {
+    let mut tris: Vec<usize> = Vec::with_capacity(fields.len());
+    for field in fields {
+        let index = parse_index(field)?;
+        if tris.last().is_some_and(|&last| last >= index) {
+            return Err("triangles must be strictly ascending".to_string());
+        }
+        tris.push(index);
+    }
+    Ok(tris)
 }
 
 fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), String> {
@@ -993,15 +1077,7 @@ fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), Stri
                     return Err("a hit needs t and at least one triangle".to_string());
                 }
                 let t = parse_f64(f[8])?;
-                let mut tris: Vec<usize> = Vec::with_capacity(f.len() - 9);
-                for field in &f[9..] {
-                    let index = parse_index(field)?;
-                    if tris.last().is_some_and(|&last| last >= index) {
-                        return Err("triangles must be strictly ascending".to_string());
-                    }
-                    tris.push(index);
-                }
-                Some((t, tris))
+                Some((t, ascending_indices(&f[9..])?))
             } else {
                 count(8, "miss (hit 0) r")?;
                 None
@@ -1014,7 +1090,28 @@ fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), Stri
             let blocked = parse_flag(f[7], "blocked")?;
             file.queries.push((i, MeshQuery::Segment { p, q, blocked }));
         }
-        tag => return Err(format!("expected a v, f, r or s line, found {tag:?}")),
+        "p" if f.len() == 5 => {
+            let side = match f[4] {
+                "1" => 1,
+                "0" => 0,
+                "-1" => -1,
+                other => return Err(format!("side must be 1, 0 or -1, found {other:?}")),
+            };
+            let p = parse_point3(&f[1..4])?;
+            file.queries.push((i, MeshQuery::Side { p, side }));
+        }
+        "p" => {
+            if f.len() < 6 {
+                return Err(format!(
+                    "a p line has 5 or at least 6 fields, found {}",
+                    f.len()
+                ));
+            }
+            let (p, d2) = (parse_point3(&f[1..4])?, parse_f64(f[4])?);
+            let tris = ascending_indices(&f[5..])?;
+            file.queries.push((i, MeshQuery::Closest { p, d2, tris }));
+        }
+        tag => return Err(format!("expected a v, f, r, s or p line, found {tag:?}")),
     }
     Ok(())
 }
@@ -1040,10 +1137,15 @@ fn parse_ray_mesh(lines: &[Vec<&str>]) -> Result<MeshFile, (usize, String)> {
     }
     let n = file.triangles.len();
     for (at, q) in &file.queries {
-        if let MeshQuery::Ray {
-            want: Some((_, tris)),
-            ..
-        } = q
+        let listed = match q {
+            MeshQuery::Ray {
+                want: Some((_, tris)),
+                ..
+            }
+            | MeshQuery::Closest { tris, .. } => Some(tris),
+            _ => None,
+        };
+        if let Some(tris) = listed
             && let Some(bad) = tris.iter().find(|&&k| k >= n)
         {
             return Err((
@@ -1190,6 +1292,7 @@ fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result
                 format!("blocked {got}"),
             ))
         }
+        other => Err(not_this_kind(other)),
     }
 }
 
@@ -1267,7 +1370,20 @@ fn oracle_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
                 format!("blocked {got}"),
             ))
         }
+        other => Err(not_this_kind(other)),
     })
+}
+
+/// The error for a query line of another mesh kind (a `p` line in a
+/// `ray_mesh` file, say).
+fn not_this_kind(q: &MeshQuery) -> String {
+    let tag = match q {
+        MeshQuery::Ray { .. } => "r",
+        MeshQuery::Segment { .. } => "s",
+        MeshQuery::Side { .. } => "p (mesh_side)",
+        MeshQuery::Closest { .. } => "p (mesh_closest)",
+    };
+    format!("a {tag} line does not belong to this kind")
 }
 
 // ---------------------------------------------------------------------------
