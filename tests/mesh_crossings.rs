@@ -57,11 +57,42 @@ fn shell() -> Solid {
     (v, t)
 }
 
+/// The cube `[0, 2]^3` with its edge from vertex 0 to vertex 1 split at
+/// its midpoint (vertex 8) in one of its two triangles, `0 1 5`, and the
+/// degenerate triangle `0 1 8` closing the gap: closed, with a degenerate
+/// triangle on the surface.
+fn split_cube() -> Solid {
+    let (mut v, mut t) = cube(0.0, 2.0, false);
+    v.push([1.0, 0.0, 0.0]);
+    let at = t
+        .iter()
+        .position(|tri| *tri == [0, 1, 5])
+        .expect("the face");
+    t[at] = [0, 8, 5];
+    t.extend([[8, 1, 5], [0, 1, 8]]);
+    (v, t)
+}
+
+/// A sliver tetrahedron whose face `a c b` (the first triangle) is so thin
+/// that its rounded normal vanishes, `c` a subnormal step off the line of
+/// `a b`: the hierarchy leaves it out, `side` and `all_hits` do not.
+fn thin_tetrahedron() -> Solid {
+    let v = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, f64::from_bits(1), 0.0],
+        [1.0, 1.0, 1.0],
+    ];
+    (v, vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [2, 0, 3]])
+}
+
 fn solid(which: usize) -> Solid {
     match which {
         0 => octahedron(),
         1 => cube(0.0, 2.0, false),
-        _ => shell(),
+        2 => shell(),
+        3 => split_cube(),
+        _ => thin_tetrahedron(),
     }
 }
 
@@ -212,7 +243,7 @@ proptest! {
     /// and near vertices, edges and faces, and away from the mesh.
     #[test]
     fn side_is_exact(
-        which in 0usize..3,
+        which in 0usize..5,
         kind in 0u8..5,
         pick in any::<[i8; 3]>(),
         axis in 0usize..3,
@@ -233,7 +264,7 @@ proptest! {
     /// points (and lattice points), at every scale.
     #[test]
     fn all_hits_are_exact(
-        which in 0usize..3,
+        which in 0usize..5,
         kinds in any::<[u8; 2]>(),
         picks in any::<[[i8; 3]; 2]>(),
         axis in 0usize..3,
@@ -339,4 +370,50 @@ fn open_meshes_are_refused() {
         closed.side([f64::NAN, 0.0, 0.0]),
         Err(InputError::NonFinite { argument: "point" })
     );
+}
+
+/// The thin face of the sliver is left out of the hierarchy but not out of
+/// `side` and `all_hits`; the degenerate triangle of the split cube is on
+/// its surface: both against the oracle, on points and rays at and near
+/// their vertices.
+#[test]
+fn thin_and_degenerate_triangles() {
+    let (mesh, v, t) = mesh_of(&thin_tetrahedron(), 0);
+    let thin = mesh.triangle(0).unwrap();
+    assert!(!thin.is_degenerate() && thin.normal() == DVec3::ZERO);
+    let c = v[2];
+    let points = [
+        c,
+        [1.5, 0.0, 0.0],
+        [1.5, f64::from_bits(1), 0.0],
+        [1.0, f64::from_bits(1), f64::from_bits(1)],
+        [1.0, 0.5, 0.25],
+        [3.0, 0.0, 0.0],
+    ];
+    let mut on = 0;
+    for p in points {
+        let want = oracle_side(p, &v, &t);
+        on += usize::from(want == MeshSide::OnBoundary);
+        assert_eq!(mesh.side(p), Ok(want), "{p:?}");
+        for target in [c, [1.5, 0.0, 0.0], [1.0, 1.0, 1.0]] {
+            let d = [0, 1, 2].map(|i| target[i] - p[i]);
+            check_all_hits(&mesh, &v, &t, p, d).unwrap();
+        }
+    }
+    // The vertex c and the point on the edge b d.
+    assert_eq!(on, 2);
+    let (mesh, v, t) = mesh_of(&split_cube(), 0);
+    assert!(mesh.is_closed());
+    for p in [
+        [0.5, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, -1.0, -1.0],
+        [1.0, 1.0, 1.0],
+    ] {
+        assert_eq!(mesh.side(p), Ok(oracle_side(p, &v, &t)), "{p:?}");
+        // From below the split edge, through it (a zero direction, from
+        // the origin itself, is no ray: no hits).
+        let d = [p[0] - 1.0, p[1] + 1.0, p[2] + 1.0];
+        check_all_hits(&mesh, &v, &t, [1.0, -1.0, -1.0], d).unwrap();
+    }
 }
