@@ -74,8 +74,6 @@ use crate::predicates::{orient2d, orient3d};
 use crate::query::ray::{Exact, ExactRay, Ray, TriangleHit, TriangleTest};
 use crate::shape::Triangle;
 use crate::sign::Sign;
-use alloc::vec;
-use alloc::vec::Vec;
 use core::iter::FusedIterator;
 use core::ops::ControlFlow;
 use glam::{DVec2, DVec3};
@@ -102,64 +100,6 @@ pub struct HitCount {
     /// Whether the ray has more hits than the buffer holds (the ones
     /// written are then the first `count`).
     pub truncated: bool,
-}
-
-/// Whether a mesh is closed, and the triangles its hierarchy leaves out,
-/// found once when the mesh is built.
-#[derive(Clone, Debug)]
-pub(super) struct Topology {
-    /// Every edge `u v` of a triangle with three distinct indices is an
-    /// edge of exactly one such triangle, and `v u` of exactly one other.
-    closed: bool,
-    /// The triangles left out of the hierarchy ([`in_hierarchy`]):
-    /// degenerate, or too thin for a unit normal.
-    left_out: Vec<u32>,
-}
-
-impl Topology {
-    /// No triangles: the empty mesh's topology.
-    pub(super) const EMPTY: Topology = Topology {
-        closed: true,
-        left_out: Vec::new(),
-    };
-
-    /// The topology of `mesh`, whose hierarchy is built: a sort of its
-    /// directed edges, `O(n log n)` for `n` triangles.
-    pub(super) fn of(mesh: &TriangleMesh) -> Topology {
-        let triangles = mesh.triangles();
-        let mut held = vec![false; triangles.len()];
-        for &i in &mesh.bvh.order {
-            held[i as usize] = true;
-        }
-        let left_out = (0..triangles.len() as u32)
-            .filter(|&i| !held[i as usize])
-            .collect();
-        let key = |u: u32, v: u32| (u64::from(u) << 32) | u64::from(v);
-        let mut edges: Vec<u64> = triangles
-            .iter()
-            .filter(|[a, b, c]| a != b && b != c && c != a)
-            .flat_map(|&[a, b, c]| [key(a, b), key(b, c), key(c, a)])
-            .collect();
-        edges.sort_unstable();
-        let unique = edges.windows(2).all(|w| w[0] != w[1]);
-        let paired = || {
-            edges
-                .iter()
-                .all(|&e| edges.binary_search(&e.rotate_left(32)).is_ok())
-        };
-        Topology {
-            closed: unique && paired(),
-            left_out,
-        }
-    }
-}
-
-/// Whether the hierarchy holds `tri`: it is not degenerate and its unit
-/// normal is not lost to rounding (the others are never hit by the
-/// hierarchy's queries).
-#[inline]
-pub(super) fn in_hierarchy(tri: &Triangle) -> bool {
-    !tri.degenerate && tri.normal() != DVec3::ZERO
 }
 
 impl TriangleMesh {

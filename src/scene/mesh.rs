@@ -43,9 +43,9 @@
 //! [`Exact`]: crate::query::ray::Exact
 //! [`Watertight`]: crate::query::ray::Watertight
 
-use super::crossings::{Topology, in_hierarchy};
 use super::shading;
 use super::spawn::Segment;
+use super::topology::{Topology, in_hierarchy};
 use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk, walk_halved_segment};
 use crate::error::InputError;
 use crate::interval::Interval;
@@ -68,7 +68,7 @@ pub struct TriangleMesh {
     normals: Option<Vec<DVec3>>,
     pub(super) bvh: BoxBvh,
     /// Whether the mesh is closed, and the triangles the hierarchy leaves
-    /// out (`crossings.rs`).
+    /// out (`topology.rs`).
     pub(super) topology: Topology,
 }
 
@@ -160,7 +160,7 @@ impl TriangleMesh {
             })
             .collect();
         mesh.bvh = BoxBvh::build(items, builder);
-        mesh.topology = Topology::of(&mesh);
+        mesh.topology = Topology::of(&mesh.triangles, &mesh.bvh.order);
         Ok(mesh)
     }
 

@@ -32,6 +32,7 @@ mod mesh;
 mod primitives;
 mod shading;
 mod spawn;
+mod topology;
 
 pub use batch::BatchQueries;
 pub use crossings::{HitCount, MeshCrossings, MeshSide};
