@@ -320,7 +320,10 @@ impl Iterator for MeshCrossings<'_> {
         let walk_range = Interval::new(start, self.range.max()).unwrap_or(self.range);
         walk::<_, 0>(&self.mesh.bvh, &self.ray, walk_range, &mut v);
         for &i in &self.mesh.topology.left_out {
-            v.consider(i);
+            // Degenerate ones are never hit (module docs): skipped.
+            if let Some(tri) = self.mesh.triangle(i as usize).filter(|t| !t.degenerate) {
+                v.consider(i, &tri);
+            }
         }
         let Some((t, triangle, hit)) = v.best else {
             self.done = true;
@@ -357,18 +360,14 @@ struct NextHit<'a> {
 }
 
 impl NextHit<'_> {
-    /// Keeps triangle `index` when the rule hits it after `after` and
-    /// before the best so far.
+    /// Keeps triangle `index` (not degenerate), `tri`, when the rule hits
+    /// it after `after` and before the best so far.
     #[inline]
-    fn consider(&mut self, index: u32) {
-        let tri = Triangle {
-            v: self.mesh.corners(index),
-            degenerate: false,
-        };
+    fn consider(&mut self, index: u32, tri: &Triangle) {
         // A hit of the rule is a hit of the closed triangle (its signs are
         // the exact ones where those are non-zero), so the exact closed
         // test screens first, and gives `t`.
-        let Some(hit) = self.prepared.cast_closed(&tri, self.range) else {
+        let Some(hit) = self.prepared.cast_closed(tri, self.range) else {
             return;
         };
         let key = (hit.t, index);
@@ -377,13 +376,15 @@ impl NextHit<'_> {
             v: mesh.corners(i),
             degenerate: false,
         };
+        // A triangle is crossed once: the last one given is not after
+        // itself (and its exact order with itself is not computed).
         let later = self
             .after
-            .is_none_or(|a| Exact::precedes(ray, range, a, key, shape));
+            .is_none_or(|a| a.1 != index && Exact::precedes(ray, range, a, key, shape));
         let sooner = self
             .best
             .is_none_or(|(t, i, _)| Exact::precedes(ray, range, key, (t, i), shape));
-        if later && sooner && owns(ray, self.axes, &tri) {
+        if later && sooner && owns(ray, self.axes, tri) {
             self.best = Some((hit.t, index, hit));
         }
     }
@@ -402,7 +403,12 @@ impl Visitor for NextHit<'_> {
     #[inline]
     fn leaf(&mut self, triangles: &[u32]) -> bool {
         for &index in triangles {
-            self.consider(index);
+            // In the hierarchy: not degenerate.
+            let tri = Triangle {
+                v: self.mesh.corners(index),
+                degenerate: false,
+            };
+            self.consider(index, &tri);
         }
         false
     }
