@@ -417,3 +417,61 @@ fn thin_and_degenerate_triangles() {
         check_all_hits(&mesh, &v, &t, [1.0, -1.0, -1.0], d).unwrap();
     }
 }
+
+/// A fuzzer finding: on an octahedron of raw vertices (two merged) spanning
+/// `1e-308` to `1e222`, a ray from a subnormal origin crosses triangles
+/// only at parameters beyond `f64::MAX`: no hit (a crossing beyond `f64`'s
+/// range is none, as for every mesh query), and `side` agrees with the
+/// oracle.
+#[test]
+fn crossings_beyond_the_range_are_no_hits() {
+    let v = [
+        [-2.246907600971213e-161, -1.679844441290292e-308, 0.0],
+        [
+            3.0000000000000187,
+            1.026408111779361e-220,
+            -2.3047129517839915e-116,
+        ],
+        [
+            3.6827872023677564e-235,
+            -1.3067702097974576e122,
+            5.983222633864129e-280,
+        ],
+        [
+            -5.946305191561497e222,
+            1.2882297539194913e-231,
+            2.0616766582375757e69,
+        ],
+        [
+            -2.9953887609770226e-265,
+            -1.204869704713901e140,
+            8.277275887708697e169,
+        ],
+        [
+            -2.9953887609770226e-265,
+            -1.204869704713901e140,
+            8.277275887708697e169,
+        ],
+    ];
+    let t = [
+        [0, 2, 4],
+        [0, 5, 2],
+        [0, 4, 3],
+        [0, 3, 5],
+        [1, 4, 2],
+        [1, 2, 5],
+        [1, 3, 4],
+        [1, 5, 3],
+    ];
+    let mesh = TriangleMesh::new(&v, &t).unwrap();
+    let (o, d) = ([1.14277e-319, 0.0, 0.0], [-1.14277e-319, 0.0, 0.0]);
+    let tris: Vec<[usize; 3]> = t.iter().map(|t| t.map(|i| i as usize)).collect();
+    let (crossings, _) = mesh_oracle::ray_crossings(o, d, &v, &tris);
+    assert!(crossings.iter().any(|c| c.2));
+    for (t, ..) in &crossings {
+        assert!(oracle::cmp_ratio(&t.num, &t.den, f64::MAX).is_gt());
+    }
+    let ray = Ray::new(o, d).unwrap();
+    assert_eq!(mesh.all_hits(&ray, Interval::FORWARD).count(), 0);
+    assert_eq!(mesh.side(o), Ok(oracle_side(o, &v, &tris)));
+}

@@ -42,7 +42,10 @@
 //! off the surface and whose range is `[0, ∞)`, the number of hits has the
 //! parity of the number of times the surface winds around the origin
 //! ([`TriangleMesh::side`]): odd inside a closed mesh that does not cross
-//! itself, even outside it. The hits' parameters are the exact
+//! itself, even outside it. (The range admits a hit by its certified `t`,
+//! as every mesh query does: a crossing whose exact parameter is within
+//! about `2^-1072` of `0`, an origin that close to the surface, may fall
+//! on the other side of the range's start.) The hits' parameters are the exact
 //! parameters of the original ray's crossings (the perturbation moves
 //! none of them past another: they are compared exactly, unperturbed).
 //!
@@ -59,9 +62,9 @@
 //! so in the projection on the `y z` plane every edge sign is decided by
 //! `orient2d`, then by comparisons of the edge's coordinates; whether the
 //! crossing lies ahead of the point is the sign of `orient3d`. A point
-//! off the surface is moved off no side of it, so the answer is the
-//! point's own; a point on the surface is found first, exactly
-//! (`orient3d` zero and the point in the closed triangle).
+//! off the surface is at a positive distance from it, so the moved point
+//! has the point's own winding number; a point on the surface is found
+//! first, exactly (`orient3d` zero and the point in the closed triangle).
 
 use super::mesh::{MeshHit, TriangleMesh};
 use crate::arith::roundoff::U;
@@ -199,7 +202,8 @@ impl TriangleMesh {
     /// queries (left out of the hierarchy) is, with a zero normal.
     /// Each hit's `t` is the certified crossing of its plane (within 4
     /// units of rounding of the exact one) and is admitted by `range`, as
-    /// for [`TriangleMesh::closest_hit_with`].
+    /// for [`TriangleMesh::closest_hit_with`] (so a crossing beyond `f64`'s
+    /// range is none).
     ///
     /// Cost: each hit is one walk of the hierarchy for the least hit after
     /// the previous one (the walk starting there), so `k` hits cost `k + 1`
