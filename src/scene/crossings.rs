@@ -111,7 +111,8 @@ impl TriangleMesh {
     /// exactly one such triangle running along it from `u` to `v`, and to
     /// exactly one other running from `v` to `u` (triangles with a
     /// repeated index are left out of the count: they bound nothing).
-    /// Decided on the indices when the mesh is built, so this is free.
+    /// Decided on the indices when the mesh is built (a sort of its `3n`
+    /// directed edges), so this is free.
     #[inline]
     pub fn is_closed(&self) -> bool {
         self.topology.closed
