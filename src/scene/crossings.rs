@@ -210,6 +210,12 @@ impl TriangleMesh {
     /// the previous one (the walk starting there), so `k` hits cost `k + 1`
     /// walks, each with up to three exact edge signs per triangle it hits.
     ///
+    /// There is no watertight form: the watertight test (the default of
+    /// [`TriangleMesh::closest_hit`]) never lets a ray through a shared
+    /// edge, but its one rounded sign there may put the ray in both
+    /// triangles, counting a crossing twice, and a ray within rounding of
+    /// an edge may be given the other triangle than the exact one.
+    ///
     /// ```
     /// use exactray::prelude::*;
     /// use exactray::scene::TriangleMesh;
