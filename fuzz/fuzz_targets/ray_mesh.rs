@@ -19,20 +19,11 @@ use arbitrary::{Arbitrary, Unstructured};
 use exactray::interval::Interval;
 use exactray::query::ray::{EXACT_T_ULPS, Exact, Ray};
 use exactray::scene::TriangleMesh;
-use exactray::testing::finite_f64_from_bits;
+use exactray::testing::{finite_f64_from_bits, lattice_point};
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
-
-fn lattice(u: &mut Unstructured, raw: bool, scale: f64) -> arbitrary::Result<DVec3> {
-    if raw {
-        let b = <[u64; 3]>::arbitrary(u)?;
-        return Ok(DVec3::from_array(b.map(finite_f64_from_bits)));
-    }
-    let c = <[i8; 3]>::arbitrary(u)?;
-    Ok(DVec3::from_array(c.map(|x| f64::from(x) * 2.0 * scale)))
-}
 
 fuzz_target!(|data: &[u8]| {
     let mut u = Unstructured::new(data);
@@ -46,7 +37,7 @@ fuzz_target!(|data: &[u8]| {
     let nv = 3 + usize::from(mode / 8 % 6);
     let mut vertices = Vec::with_capacity(nv);
     for _ in 0..nv {
-        let Ok(v) = lattice(&mut u, raw, scale) else {
+        let Ok(v) = lattice_point(&mut u, raw, 2.0 * scale) else {
             return;
         };
         vertices.push(v);
@@ -62,7 +53,10 @@ fuzz_target!(|data: &[u8]| {
     let (Ok(edit), Ok(pick)) = (u8::arbitrary(&mut u), u8::arbitrary(&mut u)) else {
         return;
     };
-    let (Ok(mut o), Ok(mut d)) = (lattice(&mut u, raw, scale), lattice(&mut u, raw, scale)) else {
+    let (Ok(mut o), Ok(mut d)) = (
+        lattice_point(&mut u, raw, 2.0 * scale),
+        lattice_point(&mut u, raw, 2.0 * scale),
+    ) else {
         return;
     };
     let tri = triangles[usize::from(pick) % nt].map(|i| vertices[i as usize]);
