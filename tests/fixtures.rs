@@ -27,7 +27,7 @@ use exactray::bvh::SphereBvh;
 use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray};
 use exactray::roots::Roots;
-use exactray::scene::TriangleMesh;
+use exactray::scene::{MeshSide, TriangleMesh};
 use exactray::shape::{Cone, Cylinder, Quadric, Sphere, Triangle};
 use exactray_oracle::implicit_oracle::{self, Pt2, Pt3};
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
@@ -349,8 +349,8 @@ const KINDS: &[Kind] = &[
     Kind {
         name: "mesh_side",
         min_fields: 4,
-        predicate: None,
-        oracle: None,
+        predicate: Some(WholeFile(crate_mesh_side)),
+        oracle: Some(WholeFile(oracle_mesh_side)),
         scaling: Scaling::Tagged(MESH_SIDE_TAGS),
     },
     Kind {
@@ -1310,19 +1310,24 @@ fn oriented_alike(triangles: &[[u32; 3]], tris: &[usize], fronts: &[bool]) -> Op
         [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
     };
     let mut flip: Vec<Option<bool>> = vec![None; tris.len()];
-    flip[0] = Some(false);
+    let Some(first) = flip.first_mut() else {
+        return Some(Vec::new());
+    };
+    *first = Some(false);
     for _ in 0..tris.len() {
         for i in 0..tris.len() {
             let Some(fi) = flip[i] else { continue };
-            for j in 0..tris.len() {
-                if flip[j].is_some() {
+            let ei = edges(i);
+            for (j, slot) in flip.iter_mut().enumerate() {
+                if slot.is_some() {
                     continue;
                 }
-                for (a, b) in edges(i) {
-                    if edges(j).contains(&(a, b)) {
-                        flip[j] = Some(!fi);
-                    } else if edges(j).contains(&(b, a)) {
-                        flip[j] = Some(fi);
+                let ej = edges(j);
+                for &(a, b) in &ei {
+                    if ej.contains(&(a, b)) {
+                        *slot = Some(!fi);
+                    } else if ej.contains(&(b, a)) {
+                        *slot = Some(fi);
                     }
                 }
             }
@@ -1332,6 +1337,56 @@ fn oriented_alike(triangles: &[[u32; 3]], tris: &[usize], fronts: &[bool]) -> Op
         .zip(fronts)
         .map(|(f, &front)| f.map(|f| front != f))
         .collect()
+}
+
+/// The crate on one `mesh_side` query: `TriangleMesh::side` must give the
+/// file's side exactly.
+fn crate_mesh_side(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |file: &MeshFile| {
+        TriangleMesh::new(&file.vertices, &file.triangles).map_err(|e| e.to_string())
+    };
+    mesh_queries(lines, setup, |_, mesh, q| match q {
+        MeshQuery::Side { p, side } => {
+            let got = match mesh.side(*p).map_err(|e| e.to_string())? {
+                MeshSide::Inside => 1,
+                MeshSide::OnBoundary => 0,
+                MeshSide::Outside => -1,
+            };
+            Ok(verdict(
+                got == *side,
+                format!("side {side}"),
+                format!("side {got}"),
+            ))
+        }
+        other => Err(not_this_kind(other)),
+    })
+}
+
+/// The oracle's exact winding number (`mesh_oracle::winding_number`) must
+/// give the same side: on a triangle, around the point (inside) or not.
+fn oracle_mesh_side(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |file: &MeshFile| -> Result<Vec<[usize; 3]>, String> {
+        Ok(file
+            .triangles
+            .iter()
+            .map(|t| t.map(|k| k as usize))
+            .collect())
+    };
+    mesh_queries(lines, setup, |file, tris, q| match q {
+        MeshQuery::Side { p, side } => {
+            let got = match mesh_oracle::winding_number(*p, &file.vertices, tris) {
+                None => 0,
+                Some(0) => -1,
+                Some(_) => 1,
+            };
+            Ok(verdict(
+                got == *side,
+                format!("side {side}"),
+                format!("side {got}"),
+            ))
+        }
+        other => Err(not_this_kind(other)),
+    })
 }
 
 fn crate_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
