@@ -144,8 +144,7 @@ mod tests {
     use super::super::insphere::{self, insphere_translated};
     use super::super::{orient2d as o2, orient3d as o3};
     use super::*;
-    use crate::arith::exponent::{Grain, pow2};
-    use crate::arith::fixed_int::{DEG1, DEG2, DEG3};
+    use crate::arith::exponent::pow2;
     use crate::testing::{
         InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
     };
@@ -195,24 +194,6 @@ mod tests {
         }
     }
 
-    fn dense2(p: [DVec2; 3]) -> Sign {
-        let gx = Grain::of(&[p[0].x, p[1].x, p[2].x]);
-        let gy = Grain::of(&[p[0].y, p[1].y, p[2].y]);
-        if gx.all_zero() || gy.all_zero() {
-            return Sign::Zero;
-        }
-        o2::big_integer(p[0], p[1], p[2], gx.lo_min, gy.lo_min)
-    }
-
-    fn dense3(p: [DVec3; 4]) -> Sign {
-        let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
-        let g = [0, 1, 2].map(|k| Grain::of(&axis(k)));
-        if g.iter().any(|g| g.all_zero()) {
-            return Sign::Zero;
-        }
-        o3::integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
-    }
-
     #[test]
     fn matches_dense_integers() {
         let mut rng = SplitMix64::new(2024);
@@ -220,12 +201,12 @@ mod tests {
         for i in 0..60_000 {
             let (p2, p3) = case(i, &mut rng, orient2d_case, orient3d_case);
             match o2::sparse_sign(p2[0], p2[1], p2[2]) {
-                Some(s) => assert_eq!(s, dense2(p2), "{p2:?}"),
+                Some(s) => assert_eq!(s, o2::dense(p2[0], p2[1], p2[2]), "{p2:?}"),
                 None => declined += 1,
             }
             match o3::sparse_sign(p3[0], p3[1], p3[2], p3[3]) {
                 Some(s) => {
-                    assert_eq!(s, dense3(p3), "{p3:?}");
+                    assert_eq!(s, o3::dense(p3), "{p3:?}");
                     zero += (s == Sign::Zero) as u32;
                 }
                 None => declined += 1,
