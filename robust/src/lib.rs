@@ -54,10 +54,10 @@
 //! - where `D` is a normal number the value is within `2^-39 |D|` of it (a
 //!   relative error below `1.9e-12`): Shewchuk's first-stage evaluation
 //!   where its error bound is below `2^-40` of it (then it is `robust`'s
-//!   own value, to the bit: almost every ordinary input), `D` correctly
-//!   rounded otherwise;
-//! - below the normal range the value is `D` rounded to the subnormal
-//!   grid (within `2^-1074`), and the smallest subnormal of `D`'s sign
+//!   own value, to the bit: almost every ordinary input), `D` computed
+//!   exactly and rounded otherwise (within `2^-52 |D|`);
+//! - below the normal range the value is within `2^-1073` of `D` (two
+//!   steps of the subnormal grid), and the smallest subnormal of `D`'s sign
 //!   where that would round to zero; beyond `f64::MAX` it is an infinity
 //!   of `D`'s sign.
 //!
@@ -74,9 +74,11 @@
 //!
 //! # Cost
 //! Where the first stage is within its bound a call costs what `robust`'s
-//! first stage costs; elsewhere it computes `D` exactly (integers at the
-//! coordinates' finest bits) and rounds it. The crate depends on exactray's
-//! `no_std` core (and, through it, `glam` and `libm`).
+//! first stage costs. Elsewhere it decides the exact sign first (an exact
+//! zero costs no more), then computes a non-zero `D` exactly and rounds it.
+//! The crate depends on exactray's `no_std` core (and, through it, `glam`
+//! and `libm`). `docs/drop-in.md` in exactray's repository has the
+//! figures.
 //!
 //! # Features
 //! - `no_std`: accepted for compatibility with `robust` 1.x; the crate is

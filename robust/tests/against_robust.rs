@@ -76,7 +76,7 @@ fn on_insphere(p: [[f64; 3]; 5]) -> Answers {
 
 /// Whether `v` is the value the crate docs promise for the exact
 /// determinant `n * 2^e`: the exact sign; within `2^-39` (`2^14` units of
-/// `2^-53`) of it where it is a normal number; within one subnormal step of
+/// `2^-53`) of it where it is a normal number; within two subnormal steps of
 /// it below that, and never zero unless it is; an infinity beyond
 /// `f64::MAX`.
 fn promised(v: f64, (n, e): &ExactValue) -> bool {
@@ -95,7 +95,7 @@ fn promised(v: f64, (n, e): &ExactValue) -> bool {
     if nearest.abs() < f64::MIN_POSITIVE {
         let step = f64::from_bits(1);
         let same_sign = (v > 0.0) == (n.sign() == num_bigint::Sign::Plus);
-        return v != 0.0 && same_sign && (v - nearest).abs() <= step;
+        return v != 0.0 && same_sign && (v - nearest).abs() <= 2.0 * step;
     }
     within_units(v, &num, &den, 1 << 14)
 }

@@ -33,34 +33,52 @@ use crate::arith::roundoff::U;
 use crate::sign::Sign;
 use glam::{DVec2, DVec3};
 
-/// Shewchuk's `resulterrbound = (3 + 8 eps) eps`: the relative error of
-/// the stage B estimate itself (summing an expansion's components in
-/// `f64`), which the first-order stage's bound adds to its second-order
-/// terms (Shewchuk 1997, section 6).
+/// Shewchuk's `resulterrbound = (3 + 8 eps) eps`: the first-order stage
+/// adds its correction to the stage B estimate, which is itself within
+/// `eps |det|` of the expansion it sums (the estimate of a nonoverlapping
+/// expansion), and the addition rounds once more; `3 eps` covers these
+/// and the rounding of the bound, relative to `|det|` (Shewchuk 1997,
+/// section 6, "resulterrbound").
 const RESULT: f64 = (3.0 + 8.0 * U) * U;
 
-/// Shewchuk's `ccwerrboundB = (2 + 12 eps) eps`: each of orient2d's two
-/// products of rounded differences is within `(1 + eps)^2 - 1` of the
-/// product of the exact differences, so the exact determinant of the
-/// rounded differences is within `2 eps + eps^2` of the true one, times
-/// `detsum`; the rest covers the rounding of the estimate and of
-/// `detsum` itself.
+// Stage B bounds. Each difference rounded to `f64` is within `eps` of
+// itself (`eps = 2^-53`, no underflow), so a product of `k` of them is
+// within `(1 + eps)^k - 1 = k eps + O(eps^2)` of the product of the exact
+// differences; the expansion of the rounded differences is computed
+// exactly, so the determinant's error is at most that times the permanent
+// (the sum of its terms' magnitudes). The `O(eps^2)` coefficient also
+// covers the rounding of the permanent and of the estimate (Shewchuk
+// 1997, section 6: `ccwerrboundB`, `o3derrboundB`, `iccerrboundB`,
+// `isperrboundB`).
+
+/// orient2d's stage B, degree 2: Shewchuk's `ccwerrboundB = (2 + 12 eps)
+/// eps`.
 const O2_B: f64 = (2.0 + 12.0 * U) * U;
-/// Shewchuk's `ccwerrboundC = (9 + 64 eps) eps^2`: after the first-order
-/// tail terms are added, what is left is second order in the roundings.
-const O2_C: f64 = (9.0 + 64.0 * U) * U * U;
-/// Shewchuk's `o3derrboundB = (3 + 28 eps) eps`: degree three in the
-/// differences, `3 eps` to first order.
+/// orient3d's stage B, degree 3: `o3derrboundB = (3 + 28 eps) eps`.
 const O3_B: f64 = (3.0 + 28.0 * U) * U;
-/// Shewchuk's `o3derrboundC = (26 + 288 eps) eps^2`.
-const O3_C: f64 = (26.0 + 288.0 * U) * U * U;
-/// Shewchuk's `iccerrboundB = (4 + 48 eps) eps`: degree four, `4 eps`.
+/// incircle's stage B, degree 4: `iccerrboundB = (4 + 48 eps) eps`.
 const IC_B: f64 = (4.0 + 48.0 * U) * U;
-/// Shewchuk's `iccerrboundC = (44 + 576 eps) eps^2`.
-const IC_C: f64 = (44.0 + 576.0 * U) * U * U;
-/// Shewchuk's `isperrboundB = (5 + 72 eps) eps`: degree five, `5 eps`.
+/// insphere's stage B, degree 5: `isperrboundB = (5 + 72 eps) eps`.
 const IS_B: f64 = (5.0 + 72.0 * U) * U;
-/// Shewchuk's `isperrboundC = (71 + 1408 eps) eps^2`.
+
+// First-order stage bounds. Writing each exact difference as its rounded
+// value plus its tail (`|tail| <= eps |rounded|`), the determinant is the
+// stage B expansion, plus the terms linear in the tails (the correction,
+// evaluated in `f64`), plus the terms of degree two and more in the tails.
+// The latter are at most `C(k, 2) eps^2` (and higher powers) times the
+// permanent; the correction's own rounding errors are `eps` times
+// first-order terms, also `O(eps^2)` times the permanent. Shewchuk's
+// constants sum both (Shewchuk 1997, section 6: `ccwerrboundC`,
+// `o3derrboundC`, `iccerrboundC`, `isperrboundC`); the estimate's error is
+// `RESULT |det|`, added at the use.
+
+/// orient2d's first-order stage: `ccwerrboundC = (9 + 64 eps) eps^2`.
+const O2_C: f64 = (9.0 + 64.0 * U) * U * U;
+/// orient3d's first-order stage: `o3derrboundC = (26 + 288 eps) eps^2`.
+const O3_C: f64 = (26.0 + 288.0 * U) * U * U;
+/// incircle's first-order stage: `iccerrboundC = (44 + 576 eps) eps^2`.
+const IC_C: f64 = (44.0 + 576.0 * U) * U * U;
+/// insphere's first-order stage: `isperrboundC = (71 + 1408 eps) eps^2`.
 const IS_C: f64 = (71.0 + 1408.0 * U) * U * U;
 
 /// The sign of a value computed within `bound` of the determinant, when

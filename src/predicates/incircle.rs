@@ -8,7 +8,10 @@
 //! big-integer exact.
 
 use super::adaptive;
-use super::sparse::{Expansion, lifted_monomials, lifted_sign, product_terms, reference};
+use super::sparse::{
+    Either, Expansion, Monomials, lifted_monomials, lifted_sign, lifted_value, product_terms,
+    reference,
+};
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
 };
@@ -228,12 +231,26 @@ fn at_grain<const D: usize>(p: &[DVec2; 4], lo: i32) -> impl Fn(usize) -> [Fixed
 /// - `det4` over the coordinates themselves, one term each: 24
 ///   permutations, times 2 for the lift, 48 products.
 pub(super) fn sparse_sign(p: [DVec2; 4]) -> Option<Sign> {
+    let (expansion, negate) = sparse_expansion(&p);
+    lifted_sign::<48, 4, 4>(expansion, negate)
+}
+
+/// The in-circle determinant within a relative `2^-52`, from the terms of
+/// [`sparse_sign`], or `None` when they do not fit.
+fn sparse_value(p: &[DVec2; 4]) -> Option<ScaledFloat> {
+    let (expansion, negate) = sparse_expansion(p);
+    lifted_value::<48, 4, 4>(expansion, negate)
+}
+
+/// The expansion [`sparse_sign`] sums, and whether its sum is negated.
+fn sparse_expansion(p: &[DVec2; 4]) -> (Either<IncircleTranslated, Monomials<4, 2>>, bool) {
     let coords = p.map(|v| [v.x, v.y]);
     let k = reference(&coords);
-    if product_terms(&incircle_translated(&coords, k)) <= 48 {
-        lifted_sign::<48, 4, 4>(incircle_translated(&coords, k), k % 2 == 0)
+    let translated = incircle_translated(&coords, k);
+    if product_terms(&translated) <= 48 {
+        (Either::First(translated), k % 2 == 0)
     } else {
-        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&coords), false)
+        (Either::Second(lifted_monomials::<4, 2>(&coords)), false)
     }
 }
 
@@ -274,11 +291,12 @@ fn integer<const D: usize, const M: usize, const R: usize>(
     integer_det::<D, M, R>(int).sign()
 }
 
-/// The in-circle determinant of `p` rounded once to 53 significant bits,
-/// with an unbounded exponent, for finite input: the integers of
-/// [`integer`] at the coordinates' finest bit, in one limb per difference
-/// where the span is within `SMALL_SPAN`, rounded by
-/// [`FixedInt::as_extended`].
+/// The in-circle determinant of `p` within a relative `2^-52`, with an
+/// unbounded exponent, for finite input: where the span is within
+/// `SMALL_SPAN`, the integers of [`integer`] at the coordinates' finest bit
+/// in one limb per difference, rounded once by [`FixedInt::as_extended`];
+/// otherwise the sparse terms of [`sparse_sign`] ([`lifted_value`]), or
+/// the wide integers where those do not fit.
 pub(super) fn rounded_determinant(p: &[DVec2; 4]) -> ScaledFloat {
     let grain = Grain::of(p.map(|v| [v.x, v.y]).as_flattened());
     if grain.all_zero() {
@@ -288,7 +306,9 @@ pub(super) fn rounded_determinant(p: &[DVec2; 4]) -> ScaledFloat {
     if grain.span() <= SMALL_SPAN {
         integer_det::<1, 2, 4>(at_grain(p, grain.lo_min)).as_extended(unit)
     } else {
-        integer_det::<DEG1, DEG2, DEG4>(at_grain(p, grain.lo_min)).as_extended(unit)
+        sparse_value(p).unwrap_or_else(|| {
+            integer_det::<DEG1, DEG2, DEG4>(at_grain(p, grain.lo_min)).as_extended(unit)
+        })
     }
 }
 

@@ -8,7 +8,10 @@
 //! (Shewchuk's, `adaptive.rs`), 4 scaled filter, 5 big-integer exact.
 
 use super::adaptive;
-use super::sparse::{Expansion, lifted_monomials, lifted_sign, product_terms, reference};
+use super::sparse::{
+    Either, Expansion, Monomials, lifted_monomials, lifted_sign, lifted_value, product_terms,
+    reference,
+};
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2,
     small_integer, unit_scale,
@@ -368,14 +371,29 @@ fn at_grain<const D: usize>(p: &[DVec3; 5], lo: i32) -> impl Fn(usize) -> [Fixed
 /// of 5 differences), or expanded over the coordinates (120 permutations
 /// times 3, 360 products), whichever has fewer terms.
 pub(super) fn sparse_sign(p: [DVec3; 5]) -> Option<Sign> {
+    let (expansion, negate) = sparse_expansion(&p);
+    lifted_sign::<360, 5, 5>(expansion, negate).map(|s| -s)
+}
+
+/// `det5` (Shewchuk's in-sphere determinant: minus ours) within a relative
+/// `2^-52`, from the terms of [`sparse_sign`], or `None` when they do not
+/// fit.
+fn sparse_value(p: &[DVec3; 5]) -> Option<ScaledFloat> {
+    let (expansion, negate) = sparse_expansion(p);
+    lifted_value::<360, 5, 5>(expansion, negate)
+}
+
+/// The expansion of `det5` [`sparse_sign`] sums, and whether its sum is
+/// negated.
+fn sparse_expansion(p: &[DVec3; 5]) -> (Either<InsphereTranslated, Monomials<5, 3>>, bool) {
     let coords = p.map(|v| [v.x, v.y, v.z]);
     let k = reference(&coords);
-    let det5 = if product_terms(&insphere_translated(&coords, k)) <= 360 {
-        lifted_sign::<360, 5, 5>(insphere_translated(&coords, k), k % 2 == 1)
+    let translated = insphere_translated(&coords, k);
+    if product_terms(&translated) <= 360 {
+        (Either::First(translated), k % 2 == 1)
     } else {
-        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&coords), false)
-    };
-    det5.map(|s| -s)
+        (Either::Second(lifted_monomials::<5, 3>(&coords)), false)
+    }
 }
 
 /// The products of `det4` with point `k` as the origin (see [`sparse_sign`]):
@@ -422,11 +440,13 @@ fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
 }
 
 /// Shewchuk's in-sphere determinant of `p` (minus ours: positive for
-/// "inside" under his orientation) rounded once to 53 significant bits,
-/// with an unbounded exponent, for finite input: the integers of
-/// [`integer`] at the coordinates' finest bit, in one limb per difference
-/// where the span is within `SMALL_SPAN`, rounded by
-/// [`FixedInt::as_extended`].
+/// "inside" under his orientation) within a relative `2^-52`, with an
+/// unbounded exponent, for finite input: where the span is within
+/// `SMALL_SPAN`, the integers of [`integer`] at the coordinates' finest
+/// bit in one limb per difference, rounded once by
+/// [`FixedInt::as_extended`]; otherwise the sparse terms of
+/// [`sparse_sign`] ([`lifted_value`]), or the wide integers where those do
+/// not fit.
 pub(super) fn rounded_determinant(p: &[DVec3; 5]) -> ScaledFloat {
     let grain = Grain::of(p.map(|v| v.to_array()).as_flattened());
     if grain.all_zero() {
@@ -436,7 +456,9 @@ pub(super) fn rounded_determinant(p: &[DVec3; 5]) -> ScaledFloat {
     if grain.span() <= SMALL_SPAN {
         integer_det::<1, 2, 3, 5>(at_grain(p, grain.lo_min)).as_extended(unit)
     } else {
-        integer_det::<DEG1, DEG2, DEG3, DEG5>(at_grain(p, grain.lo_min)).as_extended(unit)
+        sparse_value(p).unwrap_or_else(|| {
+            integer_det::<DEG1, DEG2, DEG3, DEG5>(at_grain(p, grain.lo_min)).as_extended(unit)
+        })
     }
 }
 

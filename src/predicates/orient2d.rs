@@ -14,14 +14,14 @@
 )]
 
 use super::adaptive;
-use super::sparse::cross2_of;
+use super::sparse::{cross2_of, cross2_terms};
 use crate::arith::exponent::{
     Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::lanes::Lanes;
 use crate::arith::scaled_float::ScaledFloat;
-use crate::arith::sparse_sum::diff;
+use crate::arith::sparse_sum::{diff, value_of_sum};
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -258,10 +258,12 @@ fn integer_det_value(x: [i64; 3], y: [i64; 3]) -> i128 {
     (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128 - (y[1] - y[0]) as i128 * (x[2] - x[0]) as i128
 }
 
-/// `(b - a) x (c - a)` rounded once to 53 significant bits, with an
-/// unbounded exponent, for finite input: the integers of the small-integer
-/// stage (`i128`, converted with one rounding) or of the big-integer stage
-/// (rounded by [`FixedInt::as_extended`]), at the axes' finest bits.
+/// `(b - a) x (c - a)` within a relative `2^-52` (rounded once to 53
+/// significant bits where the span is small), with an unbounded exponent,
+/// for finite input: the integers of the small-integer stage (`i128`,
+/// converted with one rounding), or the sparse terms of [`sparse_sign`]
+/// summed from the largest down ([`value_of_sum`]), or the big-integer
+/// stage's integers (rounded by [`FixedInt::as_extended`]).
 pub(super) fn rounded_determinant(a: DVec2, b: DVec2, c: DVec2) -> ScaledFloat {
     let gx = Grain::of(&[a.x, b.x, c.x]);
     let gy = Grain::of(&[a.y, b.y, c.y]);
@@ -274,7 +276,8 @@ pub(super) fn rounded_determinant(a: DVec2, b: DVec2, c: DVec2) -> ScaledFloat {
         let y = [a.y, b.y, c.y].map(|v| to_integer_i64(v, gy.lo_min));
         return ScaledFloat::new(integer_det_value(x, y) as f64, lo);
     }
-    big_integer_det(a, b, c, gx.lo_min, gy.lo_min).as_extended(lo)
+    sparse_value(a, b, c)
+        .unwrap_or_else(|| big_integer_det(a, b, c, gx.lo_min, gy.lo_min).as_extended(lo))
 }
 
 /// Stage 2: each axis as integers at its finest bit (`span <= 62`).
@@ -290,6 +293,14 @@ pub(super) fn sparse_sign(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
     let b = [diff(b.x, a.x), diff(b.y, a.y)];
     let c = [diff(c.x, a.x), diff(c.y, a.y)];
     cross2_of(b, c)
+}
+
+/// `(b - a) x (c - a)` within a relative `2^-52`, from the terms of
+/// [`sparse_sign`], or `None` when they do not fit.
+fn sparse_value(a: DVec2, b: DVec2, c: DVec2) -> Option<ScaledFloat> {
+    let b = [diff(b.x, a.x), diff(b.y, a.y)];
+    let c = [diff(c.x, a.x), diff(c.y, a.y)];
+    value_of_sum(&mut cross2_terms(b, c))
 }
 
 /// Stage 5: each axis as integers at its finest bit, whatever the span.

@@ -7,7 +7,7 @@
 
 use super::adaptive;
 use super::det::{A, certifies, det3_wide, determinant, small_det3, stage_a_rows};
-use super::sparse::det3;
+use super::sparse::{det3, det3_terms};
 use crate::arith::exponent::{
     Grain, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2, unit_integers, unit_scale,
 };
@@ -15,7 +15,7 @@ use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
 use crate::arith::magnitude::{all_within, larger, larger3};
 use crate::arith::scaled_float::ScaledFloat;
-use crate::arith::sparse_sum::diff;
+use crate::arith::sparse_sum::{diff, value_of_sum};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -272,6 +272,13 @@ pub(super) fn sparse_sign(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Option<Sign
     det3(rel(b), rel(c), rel(d))
 }
 
+/// `det[b - a, c - a, d - a]` within a relative `2^-52`, from the terms of
+/// [`sparse_sign`], or `None` when they do not fit.
+fn sparse_value([a, b, c, d]: &[DVec3; 4]) -> Option<ScaledFloat> {
+    let rel = |p: DVec3| [diff(p.x, a.x), diff(p.y, a.y), diff(p.z, a.z)];
+    value_of_sum(&mut det3_terms(rel(*b), rel(*c), rel(*d)))
+}
+
 /// Stage 5: each axis as integers at its finest bit `lo[axis]`, the
 /// determinant in `D`-limb differences, `M`-limb minors and an `R`-limb
 /// result. `<34, 67, 100>` holds every finite input: coordinates below `2^2098` (a finite `f64` over its
@@ -284,10 +291,12 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
     integer_det::<D, M, R>(p, lo).sign()
 }
 
-/// `det[b - a, c - a, d - a]` rounded once to 53 significant bits, with an
-/// unbounded exponent, for finite input: the integers of [`integer`] at
-/// each axis's finest bit, in one limb per difference where every span is
-/// within `SMALL_SPAN`, rounded by [`FixedInt::as_extended`].
+/// `det[b - a, c - a, d - a]` within a relative `2^-52`, with an unbounded
+/// exponent, for finite input: where every span is within `SMALL_SPAN`,
+/// the integers of [`integer`] at each axis's finest bit in one limb per
+/// difference, rounded once by [`FixedInt::as_extended`]; otherwise the
+/// sparse terms of [`sparse_sign`] ([`value_of_sum`]), or the wide
+/// integers where those do not fit.
 pub(super) fn rounded_determinant(p: &[DVec3; 4]) -> ScaledFloat {
     let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
     let grains = [0, 1, 2].map(|k| Grain::of(&axis(k)));
@@ -299,7 +308,7 @@ pub(super) fn rounded_determinant(p: &[DVec3; 4]) -> ScaledFloat {
     if grains.iter().all(|g| g.span() <= SMALL_SPAN) {
         integer_det::<1, 2, 3>(p, lo).as_extended(unit)
     } else {
-        integer_det::<DEG1, DEG2, DEG3>(p, lo).as_extended(unit)
+        sparse_value(p).unwrap_or_else(|| integer_det::<DEG1, DEG2, DEG3>(p, lo).as_extended(unit))
     }
 }
 

@@ -69,9 +69,10 @@
 //!   same formula and order of operations) has an error bound below `2^-40`
 //!   of itself, that evaluation is returned: wherever `robust` returns it
 //!   too, the two agree to the bit (almost every ordinary input). Elsewhere
-//!   the value is `D` correctly rounded to `f64`;
-//! - `D` below the normal range: `D` rounded to the subnormal grid, within
-//!   `2^-1074` of it, and never zero (the smallest subnormal, with `D`'s
+//!   it is `D` computed exactly and rounded: correctly where the
+//!   coordinates span few bits, within `2^-52 |D|` otherwise;
+//! - `D` below the normal range: within `2^-1073` of `D` (two steps of the
+//!   subnormal grid), and never zero (the smallest subnormal, with `D`'s
 //!   sign, where `D` rounds to zero);
 //! - `|D|` beyond `f64::MAX`: an infinity of `D`'s sign.
 //!
@@ -90,11 +91,12 @@
 //! # Performance
 //! Where the first-stage value is within its bound (almost every ordinary
 //! input), a call costs that evaluation and its bound, as `robust`'s
-//! first stage does. Elsewhere it computes `D` exactly, as integers at the
-//! coordinates' finest bits (one limb per difference when an axis spans
-//! at most about 60 bits, wider integers otherwise), and rounds it: a
-//! near-degenerate input costs tens to hundreds of nanoseconds more than
-//! its sign alone ([`super`]'s predicates).
+//! first stage does. Elsewhere it first decides the exact sign with
+//! [`super`]'s predicates, and an exact zero costs no more; a non-zero `D`
+//! is then computed exactly: as integers at the coordinates' finest bits
+//! where they span at most about 60 bits, otherwise as its exact terms
+//! summed from the largest down until the rest is below `2^-60` of the
+//! sum. `docs/drop-in.md` has the figures.
 
 use super::det;
 use super::incircle as circle;
@@ -103,6 +105,7 @@ use super::orient2d as o2;
 use super::orient3d as o3;
 use crate::arith::exponent::{TINY, pow2};
 use crate::arith::scaled_float::ScaledFloat;
+use crate::sign::Sign;
 use glam::{DVec2, DVec3};
 
 /// `2^40`: a first-stage value is returned when its error bound is below
@@ -163,7 +166,11 @@ pub fn orient2d<T: Into<f64>>(pa: Coord<T>, pb: Coord<T>, pc: Coord<T>) -> f64 {
     if first.abs() - (RELATIVE * o2::A) * detsum > RELATIVE * o2::UNDERFLOW_SLACK {
         return first;
     }
-    rounded(finite2(&[a, b, c]), || o2::rounded_determinant(a, b, c))
+    rounded(
+        finite2(&[a, b, c]),
+        || o2::orient2d(a, b, c),
+        || o2::rounded_determinant(a, b, c),
+    )
 }
 
 /// Positive when `pd` lies below the plane through `pa, pb, pc` (the side
@@ -200,9 +207,11 @@ pub fn orient3d<T: Into<f64>>(
         return first;
     }
     // Shewchuk's orientation is CGAL's with the sign flipped.
-    rounded(finite3(&[a, b, c, d]), || {
-        o3::rounded_determinant(&[a, b, c, d]).neg()
-    })
+    rounded(
+        finite3(&[a, b, c, d]),
+        || o3::orient3d(a, b, c, d),
+        || o3::rounded_determinant(&[a, b, c, d]).neg(),
+    )
 }
 
 /// Positive when `pd` lies inside the circle through `pa, pb, pc`, negative
@@ -230,9 +239,11 @@ pub fn incircle<T: Into<f64>>(pa: Coord<T>, pb: Coord<T>, pc: Coord<T>, pd: Coor
     if first.abs() > RELATIVE * bound {
         return first;
     }
-    rounded(finite2(&[a, b, c, d]), || {
-        circle::rounded_determinant(&[a, b, c, d])
-    })
+    rounded(
+        finite2(&[a, b, c, d]),
+        || circle::incircle(a, b, c, d),
+        || circle::rounded_determinant(&[a, b, c, d]),
+    )
 }
 
 /// Positive when `pe` lies inside the sphere through `pa, pb, pc, pd`,
@@ -271,7 +282,11 @@ pub fn insphere<T: Into<f64>>(
     if first.abs() > RELATIVE * bound {
         return first;
     }
-    rounded(finite3(&p), || sphere::rounded_determinant(&p))
+    rounded(
+        finite3(&p),
+        || sphere::insphere(p[0], p[1], p[2], p[3], p[4]),
+        || sphere::rounded_determinant(&p),
+    )
 }
 
 /// Shewchuk's stage A of `insphere`, in robust's order of operations: the
@@ -301,14 +316,18 @@ pub(super) fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DV
 }
 
 /// The value for an input the first stage could not answer within
-/// `2^-40`: NaN for non-finite input, otherwise the exact determinant
-/// `exact()` rounded to `f64` (the rule of the [module
-/// docs](self#the-returned-value)), never zero unless it is.
+/// `2^-40`: NaN for non-finite input, `0.0` where the predicate's exact
+/// sign (`sign()`, the crate's ladder: cheaper than the value) is zero,
+/// otherwise the exact determinant `exact()` rounded to `f64` (the rule of
+/// the [module docs](self#the-returned-value)), never zero.
 #[cold]
 #[inline(never)]
-fn rounded(finite: bool, exact: impl FnOnce() -> ScaledFloat) -> f64 {
+fn rounded(finite: bool, sign: impl FnOnce() -> Sign, exact: impl FnOnce() -> ScaledFloat) -> f64 {
     if !finite {
         return f64::NAN;
+    }
+    if sign() == Sign::Zero {
+        return 0.0;
     }
     let d = exact();
     let v = d.to_f64();
