@@ -67,7 +67,7 @@
 //! times the sum of the products' magnitudes for orient2d's first stage).
 //! So this crate's value and `robust`'s are identical where `robust`'s first
 //! stage is accurate to `2^-40`, and otherwise differ by at most `robust`'s
-//! own error.
+//! own error bound plus `2^-52 |D|`.
 //!
 //! A NaN or infinite coordinate gives NaN, as nothing else can answer all
 //! three comparisons `false`. No function panics or allocates.

@@ -1,10 +1,11 @@
 //! The `robust` crate's interface, exact for every finite input: a door for
 //! code written against `robust` (Delaunay triangulators, mesh generators).
 //!
-//! Same names, same input types, same argument order, same sign conventions
-//! and the same `f64` return as `robust` 1.x, so switching is one `use`
-//! line. Where `robust` answers from its first stage (almost every ordinary
-//! input) the value returned is bit for bit the one `robust` returns; where
+//! Same names, point types declared as `robust`'s, same argument order,
+//! same sign conventions and the same `f64` return as `robust` 1.x, so
+//! switching is one `use` line. Where `robust`'s first stage is accurate to
+//! `2^-40` of itself (almost every ordinary input) the value returned is
+//! bit for bit the one `robust` returns; where
 //! its products underflow or overflow (coordinates near `1e-160` or
 //! `1e+160`, `1e-300` beside `1e+300`) `robust` can return a wrong sign, a
 //! zero or NaN, and these functions still return the exact sign.
@@ -81,7 +82,8 @@
 //! magnitudes of the products, e.g. `|detleft| + |detright|` for
 //! orient2d); its stages certify a sign, not digits, so that bound can
 //! exceed `|D|`: `robust`'s value is then at least `|D| / 2` but may be
-//! several times `|D|`. These functions' value is the closer one.
+//! several times `|D|`. Where the two differ, these functions' value is
+//! `D` rounded, within `2^-52 |D|`.
 //!
 //! # Non-finite input
 //! A NaN or infinite coordinate gives NaN: every comparison with it is false,
