@@ -44,6 +44,12 @@ const GUARD_RELATIVE: f64 = pow2(-60);
 /// below `3 * 2^246 < 2^248` (four).
 const SMALL_SPAN: i32 = 60;
 
+/// Span up to which [`rounded_determinant`] uses two-limb differences:
+/// coordinates below `2^125`, differences below `2^126` (two limbs,
+/// signed), lifts and minors below `2^253` (four), the determinant below
+/// `3 * 2^506 < 2^508` (eight).
+const MEDIUM_SPAN: i32 = 125;
+
 /// Span up to which Shewchuk's adaptive stages are exact once scaled below
 /// 1: non-zero values of degree `j <= 4` are at least `2^-900`.
 const ADAPTIVE_SPAN: i32 = 225;
@@ -294,8 +300,8 @@ fn integer<const D: usize, const M: usize, const R: usize>(
 /// The in-circle determinant of `p` within a relative `2^-52`, with an
 /// unbounded exponent, for finite input: where the span is within
 /// `SMALL_SPAN`, the integers of [`integer`] at the coordinates' finest bit
-/// in one limb per difference, rounded once by [`FixedInt::as_extended`];
-/// otherwise the sparse terms of [`sparse_sign`] ([`lifted_value`]), or
+/// in one limb per difference (two within `MEDIUM_SPAN`), rounded once by
+/// [`FixedInt::as_extended`]; otherwise the sparse terms of [`sparse_sign`] ([`lifted_value`]), or
 /// the wide integers where those do not fit.
 pub(super) fn rounded_determinant(p: &[DVec2; 4]) -> ScaledFloat {
     let grain = Grain::of(p.map(|v| [v.x, v.y]).as_flattened());
@@ -305,6 +311,8 @@ pub(super) fn rounded_determinant(p: &[DVec2; 4]) -> ScaledFloat {
     let unit = 4 * grain.lo_min;
     if grain.span() <= SMALL_SPAN {
         integer_det::<1, 2, 4>(at_grain(p, grain.lo_min)).as_extended(unit)
+    } else if grain.span() <= MEDIUM_SPAN {
+        integer_det::<2, 4, 8>(at_grain(p, grain.lo_min)).as_extended(unit)
     } else {
         sparse_value(p).unwrap_or_else(|| {
             integer_det::<DEG1, DEG2, DEG4>(at_grain(p, grain.lo_min)).as_extended(unit)

@@ -45,6 +45,13 @@ const GUARD_RELATIVE: f64 = pow2(-60);
 /// minors below `2^186` (three), the determinant below `2^312` (five).
 const SMALL_SPAN: i32 = 60;
 
+/// Span up to which [`rounded_determinant`] uses two-limb differences:
+/// coordinates below `2^125`, differences below `2^126` (two limbs,
+/// signed), 2x2 minors below `2^253` and lifts below `3 * 2^252 < 2^254`
+/// (four), 3x3 minors below `3 * 2^379 < 2^381` (six), the determinant
+/// below `4 * 2^254 * 2^381 = 2^637` (ten).
+const MEDIUM_SPAN: i32 = 125;
+
 /// Span up to which Shewchuk's adaptive stages are exact once scaled below
 /// 1: non-zero values of degree `j <= 5` are at least `2^-900`.
 const ADAPTIVE_SPAN: i32 = 180;
@@ -443,8 +450,8 @@ fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
 /// "inside" under his orientation) within a relative `2^-52`, with an
 /// unbounded exponent, for finite input: where the span is within
 /// `SMALL_SPAN`, the integers of [`integer`] at the coordinates' finest
-/// bit in one limb per difference, rounded once by
-/// [`FixedInt::as_extended`]; otherwise the sparse terms of
+/// bit in one limb per difference (two within `MEDIUM_SPAN`), rounded once
+/// by [`FixedInt::as_extended`]; otherwise the sparse terms of
 /// [`sparse_sign`] ([`lifted_value`]), or the wide integers where those do
 /// not fit.
 pub(super) fn rounded_determinant(p: &[DVec3; 5]) -> ScaledFloat {
@@ -455,6 +462,8 @@ pub(super) fn rounded_determinant(p: &[DVec3; 5]) -> ScaledFloat {
     let unit = 5 * grain.lo_min;
     if grain.span() <= SMALL_SPAN {
         integer_det::<1, 2, 3, 5>(at_grain(p, grain.lo_min)).as_extended(unit)
+    } else if grain.span() <= MEDIUM_SPAN {
+        integer_det::<2, 4, 6, 10>(at_grain(p, grain.lo_min)).as_extended(unit)
     } else {
         sparse_value(p).unwrap_or_else(|| {
             integer_det::<DEG1, DEG2, DEG3, DEG5>(at_grain(p, grain.lo_min)).as_extended(unit)

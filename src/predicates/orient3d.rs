@@ -24,6 +24,12 @@ use glam::DVec3;
 /// the determinant below `3 * 2^187 < 2^189` (three).
 const SMALL_SPAN: i32 = 61;
 
+/// Span (per axis) up to which [`rounded_determinant`] uses two-limb
+/// differences: coordinates below `2^125`, differences below `2^126` (two
+/// limbs, signed), minors below `2^253` (four), the determinant below `3 *
+/// 2^379 < 2^381` (six).
+const MEDIUM_SPAN: i32 = 125;
+
 /// Span (per axis) up to which Shewchuk's adaptive stages are exact once
 /// each axis is scaled below 1: every non-zero value of degree `j <= 3`
 /// they form is a multiple of `2^(-j * span)`, hence at least `2^-900`, so
@@ -294,7 +300,8 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
 /// `det[b - a, c - a, d - a]` within a relative `2^-52`, with an unbounded
 /// exponent, for finite input: where every span is within `SMALL_SPAN`,
 /// the integers of [`integer`] at each axis's finest bit in one limb per
-/// difference, rounded once by [`FixedInt::as_extended`]; otherwise the
+/// difference (two within `MEDIUM_SPAN`), rounded once by
+/// [`FixedInt::as_extended`]; otherwise the
 /// sparse terms of [`sparse_sign`] ([`value_of_sum`]), or the wide
 /// integers where those do not fit.
 pub(super) fn rounded_determinant(p: &[DVec3; 4]) -> ScaledFloat {
@@ -307,6 +314,8 @@ pub(super) fn rounded_determinant(p: &[DVec3; 4]) -> ScaledFloat {
     let unit = lo[0] + lo[1] + lo[2];
     if grains.iter().all(|g| g.span() <= SMALL_SPAN) {
         integer_det::<1, 2, 3>(p, lo).as_extended(unit)
+    } else if grains.iter().all(|g| g.span() <= MEDIUM_SPAN) {
+        integer_det::<2, 4, 6>(p, lo).as_extended(unit)
     } else {
         sparse_value(p).unwrap_or_else(|| integer_det::<DEG1, DEG2, DEG3>(p, lo).as_extended(unit))
     }

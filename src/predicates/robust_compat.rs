@@ -71,7 +71,8 @@
 //!   of itself, that evaluation is returned: wherever `robust` returns it
 //!   too, the two agree to the bit (almost every ordinary input). Elsewhere
 //!   it is `D` computed exactly and rounded: correctly where the
-//!   coordinates span few bits, within `2^-52 |D|` otherwise;
+//!   coordinates span at most about 125 bits (orient2d: 62), within
+//!   `2^-52 |D|` otherwise;
 //! - `D` below the normal range: within `2^-1073` of `D` (two steps of the
 //!   subnormal grid), and never zero (the smallest subnormal, with `D`'s
 //!   sign, where `D` rounds to zero);
@@ -96,7 +97,8 @@
 //! first stage does. Elsewhere it first decides the exact sign with
 //! [`super`]'s predicates, and an exact zero costs no more; a non-zero `D`
 //! is then computed exactly: as integers at the coordinates' finest bits
-//! where they span at most about 60 bits, otherwise as its exact terms
+//! (one or two limbs each) where they span at most about 125 bits
+//! (orient2d: 62), otherwise as its exact terms
 //! summed from the largest down until the rest is below `2^-60` of the
 //! sum. `docs/drop-in.md` has the figures.
 
