@@ -5,7 +5,7 @@
 //!   equals `robust`'s, and `orient3d` and `insphere` are the opposite of
 //!   the crate's own (CGAL's) predicates.
 //! - Where `robust` is exact (moderate coordinates, uniform): the same sign
-//!   on every case and the same value to the bit.
+//!   on every case and, almost everywhere, the same value to the bit.
 //! - Everywhere (the hard classes of `exactray::testing`): the exact
 //!   oracle's sign on every case, with a count of the cases where `robust`
 //!   is wrong (run with `--nocapture` to see the table); on explicit cases
@@ -20,6 +20,54 @@ use exactray::testing::{
     InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
 };
 use exactray_oracle::oracle;
+
+/// The `robust` crate on this crate's point types: its coordinates passed
+/// over field by field.
+mod theirs {
+    use exactray::predicates::robust_compat::{Coord, Coord3D};
+
+    fn c<T: Into<f64>>(p: Coord<T>) -> robust::Coord<f64> {
+        robust::Coord {
+            x: p.x.into(),
+            y: p.y.into(),
+        }
+    }
+
+    fn c3<T: Into<f64>>(p: Coord3D<T>) -> robust::Coord3D<f64> {
+        robust::Coord3D {
+            x: p.x.into(),
+            y: p.y.into(),
+            z: p.z.into(),
+        }
+    }
+
+    pub fn orient2d<T: Into<f64>>(a: Coord<T>, b: Coord<T>, c_: Coord<T>) -> f64 {
+        robust::orient2d(c(a), c(b), c(c_))
+    }
+
+    pub fn incircle<T: Into<f64>>(a: Coord<T>, b: Coord<T>, c_: Coord<T>, d: Coord<T>) -> f64 {
+        robust::incircle(c(a), c(b), c(c_), c(d))
+    }
+
+    pub fn orient3d<T: Into<f64>>(
+        a: Coord3D<T>,
+        b: Coord3D<T>,
+        c: Coord3D<T>,
+        d: Coord3D<T>,
+    ) -> f64 {
+        robust::orient3d(c3(a), c3(b), c3(c), c3(d))
+    }
+
+    pub fn insphere<T: Into<f64>>(
+        a: Coord3D<T>,
+        b: Coord3D<T>,
+        c: Coord3D<T>,
+        d: Coord3D<T>,
+        e: Coord3D<T>,
+    ) -> f64 {
+        robust::insphere(c3(a), c3(b), c3(c), c3(d), c3(e))
+    }
+}
 
 /// The sign a caller reads with `> 0.0`, `< 0.0`, `== 0.0`; `None` for NaN,
 /// which answers none of them.
@@ -69,7 +117,7 @@ type Answers = (f64, f64, i8);
 fn on_orient2d([a, b, c]: [[f64; 2]; 3]) -> Answers {
     let p = |[x, y]: [f64; 2]| Coord { x, y };
     (
-        robust::orient2d(p(a), p(b), p(c)),
+        theirs::orient2d(p(a), p(b), p(c)),
         robust_compat::orient2d(p(a), p(b), p(c)),
         oracle::orient2d(a, b, c),
     )
@@ -78,7 +126,7 @@ fn on_orient2d([a, b, c]: [[f64; 2]; 3]) -> Answers {
 fn on_orient3d([a, b, c, d]: [[f64; 3]; 4]) -> Answers {
     let p = |[x, y, z]: [f64; 3]| Coord3D { x, y, z };
     (
-        robust::orient3d(p(a), p(b), p(c), p(d)),
+        theirs::orient3d(p(a), p(b), p(c), p(d)),
         robust_compat::orient3d(p(a), p(b), p(c), p(d)),
         // The oracle is CGAL's orientation, Shewchuk's negated.
         -oracle::orient3d(a, b, c, d),
@@ -88,7 +136,7 @@ fn on_orient3d([a, b, c, d]: [[f64; 3]; 4]) -> Answers {
 fn on_incircle([a, b, c, d]: [[f64; 2]; 4]) -> Answers {
     let p = |[x, y]: [f64; 2]| Coord { x, y };
     (
-        robust::incircle(p(a), p(b), p(c), p(d)),
+        theirs::incircle(p(a), p(b), p(c), p(d)),
         robust_compat::incircle(p(a), p(b), p(c), p(d)),
         oracle::incircle(a, b, c, d),
     )
@@ -97,7 +145,7 @@ fn on_incircle([a, b, c, d]: [[f64; 2]; 4]) -> Answers {
 fn on_insphere([a, b, c, d, e]: [[f64; 3]; 5]) -> Answers {
     let p = |[x, y, z]: [f64; 3]| Coord3D { x, y, z };
     (
-        robust::insphere(p(a), p(b), p(c), p(d), p(e)),
+        theirs::insphere(p(a), p(b), p(c), p(d), p(e)),
         robust_compat::insphere(p(a), p(b), p(c), p(d), p(e)),
         // The oracle is CGAL's oriented sphere, Shewchuk's negated.
         -oracle::insphere(a, b, c, d, e),
@@ -135,7 +183,7 @@ fn sign_conventions_are_robusts() {
     // orient2d: counterclockwise is positive, in both and in the crate's own.
     let (a, b, c) = (p2(0.0, 0.0), p2(1.0, 0.0), p2(0.0, 1.0));
     for (x, y, z, expected) in [(a, b, c, 1), (a, c, b, -1), (a, b, p2(2.0, 0.0), 0)] {
-        assert_eq!(sign_of(robust::orient2d(x, y, z)), Some(expected));
+        assert_eq!(sign_of(theirs::orient2d(x, y, z)), Some(expected));
         assert_eq!(sign_of(robust_compat::orient2d(x, y, z)), Some(expected));
         let own = exactray::predicates::orient2d([x.x, x.y], [y.x, y.y], [z.x, z.y]);
         assert_eq!(
@@ -154,7 +202,7 @@ fn sign_conventions_are_robusts() {
         (p3(0.0, 0.0, -1.0), 1),
         (p3(0.3, 0.7, 0.0), 0),
     ] {
-        assert_eq!(sign_of(robust::orient3d(a, b, c, d)), Some(expected));
+        assert_eq!(sign_of(theirs::orient3d(a, b, c, d)), Some(expected));
         assert_eq!(sign_of(robust_compat::orient3d(a, b, c, d)), Some(expected));
         let own = exactray::predicates::orient3d(arr(a), arr(b), arr(c), arr(d));
         assert_eq!(
@@ -168,7 +216,7 @@ fn sign_conventions_are_robusts() {
     // positive, and the sign flips with their order.
     let (a, b, c) = (p2(1.0, 0.0), p2(0.0, 1.0), p2(-1.0, 0.0));
     for (d, expected) in [(p2(0.0, 0.0), 1), (p2(0.0, -1.0), 0), (p2(2.0, 0.0), -1)] {
-        assert_eq!(sign_of(robust::incircle(a, b, c, d)), Some(expected));
+        assert_eq!(sign_of(theirs::incircle(a, b, c, d)), Some(expected));
         assert_eq!(sign_of(robust_compat::incircle(a, b, c, d)), Some(expected));
         assert_eq!(
             sign_of(robust_compat::incircle(b, a, c, d)),
@@ -191,13 +239,13 @@ fn sign_conventions_are_robusts() {
         p3(0.0, 1.0, 0.0),
         p3(0.0, 0.0, -1.0),
     );
-    assert!(robust::orient3d(a, b, c, d) > 0.0);
+    assert!(theirs::orient3d(a, b, c, d) > 0.0);
     for (e, expected) in [
         (p3(0.25, 0.25, -0.25), 1),
         (p3(1.0, 1.0, -1.0), 0),
         (p3(2.0, 2.0, -2.0), -1),
     ] {
-        assert_eq!(sign_of(robust::insphere(a, b, c, d, e)), Some(expected));
+        assert_eq!(sign_of(theirs::insphere(a, b, c, d, e)), Some(expected));
         assert_eq!(
             sign_of(robust_compat::insphere(a, b, c, d, e)),
             Some(expected)
@@ -218,8 +266,10 @@ fn sign_conventions_are_robusts() {
 
 /// Coordinates uniform in `[-1000, 1000)`: no product underflows or
 /// overflows, so robust is exact, and its first stage answers almost every
-/// case. The door must give the same sign everywhere and the same value
-/// to the bit wherever robust answered from its first stage.
+/// case. The door must give the same sign everywhere, and the same value
+/// to the bit wherever its own first stage is within `2^-40` of itself
+/// (about 99% of these cases; the others, mostly in-circle and in-sphere
+/// cases whose bound is wider, get the exact determinant rounded).
 #[test]
 fn same_answers_as_robust_where_robust_is_exact() {
     let mut rng = SplitMix64::new(17);
@@ -233,9 +283,9 @@ fn same_answers_as_robust_where_robust_is_exact() {
         };
         let [a, b, c, d] = [p2(), p2(), p2(), p2()];
         for (theirs, ours) in [
-            (robust::orient2d(a, b, c), robust_compat::orient2d(a, b, c)),
+            (theirs::orient2d(a, b, c), robust_compat::orient2d(a, b, c)),
             (
-                robust::incircle(a, b, c, d),
+                theirs::incircle(a, b, c, d),
                 robust_compat::incircle(a, b, c, d),
             ),
         ] {
@@ -250,11 +300,11 @@ fn same_answers_as_robust_where_robust_is_exact() {
         });
         for (theirs, ours) in [
             (
-                robust::orient3d(a, b, c, d),
+                theirs::orient3d(a, b, c, d),
                 robust_compat::orient3d(a, b, c, d),
             ),
             (
-                robust::insphere(a, b, c, d, e),
+                theirs::insphere(a, b, c, d, e),
                 robust_compat::insphere(a, b, c, d, e),
             ),
         ] {
@@ -270,9 +320,9 @@ fn same_answers_as_robust_where_robust_is_exact() {
         "uniform: {identical} of {} values identical to robust's",
         4 * cases
     );
-    // robust's later stages return their own estimate; on uniform inputs
-    // its first stage answers all but a handful.
-    assert!(identical >= 4 * cases - 4 * cases / 1000, "{identical}");
+    // 79,230 of 80,000 with this seed; a change of the first stages'
+    // order of operations would drop it far lower.
+    assert!(identical >= 4 * cases - 4 * cases / 50, "{identical}");
 }
 
 /// Every class of `exactray::testing`, every predicate: the door's sign is
@@ -406,15 +456,21 @@ fn returned_values() {
     // A zero is positive zero, whatever the first stage's sign of zero.
     let zero = robust_compat::orient2d(p2(0.0, 0.0), p2(-1.0, 0.0), p2(1.0, 0.0));
     assert_eq!(zero.to_bits(), 0.0f64.to_bits());
-    // The first stage underflows to zero: the exact sign on the smallest
-    // normal magnitude.
+    // The determinant, 1e-200 * 1e-200, is below the smallest subnormal:
+    // the smallest subnormal, with the exact sign.
     let tiny = robust_compat::orient2d(p2(0.0, 0.0), p2(1e-200, 0.0), p2(0.0, 1e-200));
-    assert_eq!(tiny, f64::MIN_POSITIVE);
+    assert_eq!(tiny, f64::from_bits(1));
     let tiny = robust_compat::orient2d(p2(0.0, 0.0), p2(0.0, 1e-200), p2(1e-200, 0.0));
-    assert_eq!(tiny, -f64::MIN_POSITIVE);
-    // The first stage overflows: the same.
-    let huge = robust_compat::orient2d(p2(-1e300, -1e300), p2(1e300, 1e300), p2(0.0, 1e-300));
-    assert_eq!(huge, f64::MIN_POSITIVE);
+    assert_eq!(tiny, -f64::from_bits(1));
+    // The first stage overflows; the determinant, (2^601, 2^601) x (2^600,
+    // 2^600 + 2^-300) = 2^601 * 2^-300, is a normal number: exactly it.
+    let (a, b) = (-(2f64.powi(600)), 2f64.powi(600));
+    let huge = robust_compat::orient2d(p2(a, a), p2(b, b), p2(0.0, 2f64.powi(-300)));
+    assert_eq!(huge, 2f64.powi(301));
+    // Beyond f64::MAX: an infinity of the exact sign.
+    let m = f64::MAX;
+    let beyond = robust_compat::orient2d(p2(-m, -m), p2(m, -m), p2(-m, m));
+    assert_eq!(beyond, f64::INFINITY);
 }
 
 #[test]
@@ -457,15 +513,21 @@ fn other_coordinate_types() {
     // 0.1f32 is not 0.1f64, but the points are exactly coplanar as given.
     assert_eq!(
         robust_compat::orient3d(a, b, c, f(0.0, 0.0, 1.0)),
-        robust::orient3d(a, b, c, f(0.0, 0.0, 1.0))
+        theirs::orient3d(a, b, c, f(0.0, 0.0, 1.0))
     );
-    // The same types as robust's: a robust::Coord is a robust_compat::Coord.
-    let theirs: robust::Coord<f64> = Coord { x: 1.0, y: 2.0 };
-    let _ours: Coord<f64> = theirs;
+    // robust's derives: copied, compared, printed; and the functions as
+    // pointers of robust's signature.
+    let p = Coord { x: 1.0, y: 2.0 };
+    let q = p;
+    assert_eq!(p, q);
+    assert_eq!(
+        format!("{p:?}"),
+        format!("{:?}", robust::Coord { x: 1.0, y: 2.0 })
+    );
     let as_pointer: fn(Coord<f64>, Coord<f64>, Coord<f64>) -> f64 = robust_compat::orient2d;
-    assert!(as_pointer(p(0.0, 0.0), p(1.0, 0.0), p(0.0, 1.0)) > 0.0);
-    fn p(x: f64, y: f64) -> robust::Coord<f64> {
-        robust::Coord { x, y }
+    assert!(as_pointer(i2(0.0, 0.0), i2(1.0, 0.0), i2(0.0, 1.0)) > 0.0);
+    fn i2(x: f64, y: f64) -> Coord<f64> {
+        Coord { x, y }
     }
 }
 

@@ -85,6 +85,13 @@ impl<const N: usize> FixedInt<N> {
         Self::from_i64_shifted(m >> tz, (e + tz as i32 - lo) as u32)
     }
 
+    /// The integer whose two's-complement limbs (least significant first)
+    /// are `limbs`.
+    #[inline]
+    pub(crate) fn from_limbs(limbs: [u64; N]) -> Self {
+        FixedInt { limbs }
+    }
+
     /// The value of an `i64`.
     #[inline]
     pub(crate) fn from_i64(m: i64) -> Self {

@@ -10,6 +10,8 @@
 )]
 
 use super::exponent::split;
+use super::fixed_int::FixedInt;
+use super::scaled_float::ScaledFloat;
 use crate::sign::Sign;
 use core::mem::MaybeUninit;
 
@@ -27,8 +29,12 @@ const INDEX_BITS: u32 = 10;
 const MAX_LIMBS: usize = 5;
 
 /// Limbs of the running sum of [`sign_of_sum`], two's complement: `L + 1`
-/// of them are used.
-const WINDOW: usize = MAX_LIMBS + 1;
+/// of them are used, `L + 2` by [`value_of_sum`].
+const WINDOW: usize = MAX_LIMBS + 2;
+
+/// Bits [`value_of_sum`] keeps its running sum above what the terms left
+/// can add: it stops when they sum to less than `2^-VALUE_BITS` of it.
+const VALUE_BITS: i32 = 60;
 
 /// A coordinate difference `p - q`: `n` exact terms `m * 2^e`, `|m| < 2^63`.
 #[derive(Clone, Copy)]
@@ -211,6 +217,39 @@ fn mul_small<const L: usize>(a: &mut [u64; L], k: usize, x: u64) {
 /// above `base`) keeps it below `2^(64 L + guard + 2)` in units of
 /// `2^base`: inside `L + 1` limbs, two's complement (`guard <= 10`).
 pub(crate) fn sign_of_sum<const N: usize, const L: usize>(terms: &mut Terms<N, L>) -> Option<Sign> {
+    let (window, _) = leading_sum(terms, 0)?;
+    let (bits, negative) = magnitude_bits(&window[..L + 1]);
+    Some(match (bits, negative) {
+        (0, _) => Sign::Zero,
+        (_, true) => Sign::Negative,
+        _ => Sign::Positive,
+    })
+}
+
+/// The sum of `terms` within a relative `2^-52` (the terms left out sum
+/// to less than `2^-60` of the rest, which is then rounded once to 53
+/// bits), with its exact sign and an unbounded exponent; `None` when a
+/// product did not fit `terms`.
+///
+/// As [`sign_of_sum`], but the running sum must exceed the bound on the
+/// terms left by `VALUE_BITS` more bits before it stops; an undecided sum
+/// is then below `2^(64 L + guard + VALUE_BITS + 2)` in units of `2^base`:
+/// inside `L + 2` limbs.
+pub(crate) fn value_of_sum<const N: usize, const L: usize>(
+    terms: &mut Terms<N, L>,
+) -> Option<ScaledFloat> {
+    let (window, base) = leading_sum(terms, VALUE_BITS)?;
+    Some(FixedInt::from_limbs(window).as_extended(base))
+}
+
+/// The running sum of [`sign_of_sum`] when it stops, with `extra` more
+/// bits of margin over the terms left (`0` or `VALUE_BITS`): its limbs
+/// (two's complement, sign-extended over the whole window) and the
+/// exponent of its unit.
+fn leading_sum<const N: usize, const L: usize>(
+    terms: &mut Terms<N, L>,
+    extra: i32,
+) -> Option<([u64; WINDOW], i32)> {
     const { assert!(L <= MAX_LIMBS) };
     if terms.overflowed {
         return None;
@@ -229,8 +268,9 @@ pub(crate) fn sign_of_sum<const N: usize, const L: usize>(terms: &mut Terms<N, L
     }
     let term = |key: u32| terms.get((key & (TERMS_LIMIT as u32 - 1)) as usize);
     let mut window = [0u64; WINDOW];
-    // `L + 1` limbs of it: enough (see above).
-    let sum = &mut window[..L + 1];
+    // `L + 1` limbs of it, `L + 2` with a margin: enough (see above).
+    let used = L + 1 + usize::from(extra > 0);
+    let sum = &mut window[..used];
     let mut base = 0;
     while len > 0 {
         let t = term(keys[0]);
@@ -244,17 +284,15 @@ pub(crate) fn sign_of_sum<const N: usize, const L: usize>(terms: &mut Terms<N, L
         let (bits, negative) = magnitude_bits(sum);
         let decided = match len {
             0 => true,
-            _ => bits > 0 && bits - 1 + base >= term(keys[0]).top + guard,
+            _ => bits > 0 && bits - 1 + base >= term(keys[0]).top + guard + extra,
         };
         if decided {
-            return Some(match (bits, negative) {
-                (0, _) => Sign::Zero,
-                (_, true) => Sign::Negative,
-                _ => Sign::Positive,
-            });
+            let fill = if negative { u64::MAX } else { 0 };
+            window[used..].iter_mut().for_each(|l| *l = fill);
+            return Some((window, base));
         }
     }
-    Some(Sign::Zero)
+    Some(([0; WINDOW], 0))
 }
 
 /// Restores the max-heap order of `keys` below position `i`.

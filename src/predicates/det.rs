@@ -76,6 +76,18 @@ pub(crate) fn certifies(margin: f64, zsum: f64, extra_slack: f64) -> bool {
     margin > (Z_SLACK * LIFT) * zsum + (UNDERFLOW_SLACK + extra_slack) * LIFT
 }
 
+/// Whether stage 1's error bound on [`stage_a_rows`]'s determinant `det`
+/// (the slack terms of [`certifies`] included) is below `|det| / factor`,
+/// for a power of two `factor >= 1`: `|det| - factor * A * permanent >
+/// factor * (Z_SLACK * zsum + UNDERFLOW_SLACK)`, both sides times
+/// `2^1000` as in [`certifies`]. Scaling a rounded bound by a power of two
+/// is exact, so the rounding margins of the bound carry over.
+#[inline(always)]
+pub(crate) fn within(det: f64, permanent: f64, zsum: f64, factor: f64) -> bool {
+    (det.abs() - (factor * A) * permanent) * LIFT
+        > factor * ((Z_SLACK * LIFT) * zsum + UNDERFLOW_SLACK * LIFT)
+}
+
 /// The sign of `det[b, c, d]` for integer rows below `2^62` in magnitude:
 /// minors in `i128`, and the 189-bit determinant as an `i128` high part and
 /// a `u64` low part.

@@ -3,15 +3,21 @@
 //! Exact for every finite input.
 //!
 //! Stage ladder (see the [module docs](super)): 1 filtered, 2
-//! small-integer exact, 3 adaptive (`robust`), 4 scaled filter, 5
+//! small-integer exact, 3 adaptive
+//! (Shewchuk's, `adaptive.rs`), 4 scaled filter, 5
 //! big-integer exact.
 
-use super::sparse::{Expansion, lifted_monomials, lifted_sign, product_terms, reference};
+use super::adaptive;
+use super::sparse::{
+    Either, Expansion, Monomials, lifted_monomials, lifted_sign, lifted_value, product_terms,
+    reference,
+};
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, in_range, pow2, scale_pow2, small_integer, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG4, FixedInt};
 use crate::arith::magnitude::{largest_abs, zero_or_at_least};
+use crate::arith::scaled_float::ScaledFloat;
 use crate::arith::sparse_sum::{Diff, diff};
 use crate::sign::Sign;
 use glam::DVec2;
@@ -37,6 +43,12 @@ const GUARD_RELATIVE: f64 = pow2(-60);
 /// `2^61` (one limb), lifts and minors below `2^123` (two), the determinant
 /// below `3 * 2^246 < 2^248` (four).
 const SMALL_SPAN: i32 = 60;
+
+/// Span up to which [`rounded_determinant`] uses two-limb differences:
+/// coordinates below `2^125`, differences below `2^126` (two limbs,
+/// signed), lifts and minors below `2^253` (four), the determinant below
+/// `3 * 2^506 < 2^508` (eight).
+const MEDIUM_SPAN: i32 = 125;
 
 /// Span up to which Shewchuk's adaptive stages are exact once scaled below
 /// 1: non-zero values of degree `j <= 4` are at least `2^-900`.
@@ -82,16 +94,40 @@ enum Guard {
 /// NaN in it when the difference guard declined.
 #[inline(always)]
 fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign, Declined> {
+    let (det, declined) = stage_a(a, b, c, d, guard);
+    if det > declined.bound {
+        Ok(Sign::Positive)
+    } else if -det > declined.bound {
+        Ok(Sign::Negative)
+    } else {
+        Err(declined)
+    }
+}
+
+/// Stage 1 on unscaled input, for `robust_compat`: Shewchuk's stage A
+/// determinant (robust's value, same operations in the same order) and its
+/// error bound, both NaN where the difference guard declines.
+#[inline(always)]
+pub(super) fn first_stage(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> (f64, f64) {
+    let (det, declined) = stage_a(a, b, c, d, Guard::MinDifference);
+    (det, declined.bound)
+}
+
+/// Stage 1's determinant, its permanent and its bound `A * permanent +
+/// slack`; all NaN when the difference guard declined.
+#[inline(always)]
+fn stage_a(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> (f64, Declined) {
     let (ad, bd, cd) = (a - d, b - d, c - d);
     let slack = match guard {
         Guard::MinDifference => {
             let m = ad.abs().min(bd.abs()).min(cd.abs()).min_element();
             let diffs = [ad.x, ad.y, bd.x, bd.y, cd.x, cd.y];
             if (m < GUARD_MIN_DIFF || m.is_nan()) && !zero_or_at_least(&diffs, GUARD_MIN_DIFF) {
-                return Err(Declined {
+                let nan = Declined {
                     permanent: f64::NAN,
                     bound: f64::NAN,
-                });
+                };
+                return (f64::NAN, nan);
             }
             0.0
         }
@@ -111,13 +147,7 @@ fn filtered(a: DVec2, b: DVec2, c: DVec2, d: DVec2, guard: Guard) -> Result<Sign
         + (cxay.abs() + axcy.abs()) * blift
         + (axby.abs() + bxay.abs()) * clift;
     let bound = A * permanent + slack;
-    if det > bound {
-        Ok(Sign::Positive)
-    } else if -det > bound {
-        Ok(Sign::Negative)
-    } else {
-        Err(Declined { permanent, bound })
-    }
+    (det, Declined { permanent, bound })
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
@@ -169,9 +199,10 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, d: DVec2, stage1: Declined) -> Sign {
         return Sign::Zero;
     }
     let s = scaled();
-    if grain.span() <= ADAPTIVE_SPAN {
-        let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
-        return Sign::of_f64(robust::incircle(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
+    if grain.span() <= ADAPTIVE_SPAN
+        && let Some(sign) = adaptive::incircle(s[0], s[1], s[2], s[3])
+    {
+        return sign;
     }
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
@@ -206,12 +237,26 @@ fn at_grain<const D: usize>(p: &[DVec2; 4], lo: i32) -> impl Fn(usize) -> [Fixed
 /// - `det4` over the coordinates themselves, one term each: 24
 ///   permutations, times 2 for the lift, 48 products.
 pub(super) fn sparse_sign(p: [DVec2; 4]) -> Option<Sign> {
+    let (expansion, negate) = sparse_expansion(&p);
+    lifted_sign::<48, 4, 4>(expansion, negate)
+}
+
+/// The in-circle determinant within a relative `2^-52`, from the terms of
+/// [`sparse_sign`], or `None` when they do not fit.
+fn sparse_value(p: &[DVec2; 4]) -> Option<ScaledFloat> {
+    let (expansion, negate) = sparse_expansion(p);
+    lifted_value::<48, 4, 4>(expansion, negate)
+}
+
+/// The expansion [`sparse_sign`] sums, and whether its sum is negated.
+fn sparse_expansion(p: &[DVec2; 4]) -> (Either<IncircleTranslated, Monomials<4, 2>>, bool) {
     let coords = p.map(|v| [v.x, v.y]);
     let k = reference(&coords);
-    if product_terms(&incircle_translated(&coords, k)) <= 48 {
-        lifted_sign::<48, 4, 4>(incircle_translated(&coords, k), k % 2 == 0)
+    let translated = incircle_translated(&coords, k);
+    if product_terms(&translated) <= 48 {
+        (Either::First(translated), k % 2 == 0)
     } else {
-        lifted_sign::<48, 4, 4>(lifted_monomials::<4, 2>(&coords), false)
+        (Either::Second(lifted_monomials::<4, 2>(&coords)), false)
     }
 }
 
@@ -249,6 +294,37 @@ impl Expansion<4> for IncircleTranslated {
 fn integer<const D: usize, const M: usize, const R: usize>(
     int: impl Fn(usize) -> [FixedInt<D>; 2],
 ) -> Sign {
+    integer_det::<D, M, R>(int).sign()
+}
+
+/// The in-circle determinant of `p` within a relative `2^-52`, with an
+/// unbounded exponent, for finite input: where the span is within
+/// `SMALL_SPAN`, the integers of [`integer`] at the coordinates' finest bit
+/// in one limb per difference (two within `MEDIUM_SPAN`), rounded once by
+/// [`FixedInt::as_extended`]; otherwise the sparse terms of [`sparse_sign`] ([`lifted_value`]), or
+/// the wide integers where those do not fit.
+pub(super) fn rounded_determinant(p: &[DVec2; 4]) -> ScaledFloat {
+    let grain = Grain::of(p.map(|v| [v.x, v.y]).as_flattened());
+    if grain.all_zero() {
+        return ScaledFloat::ZERO;
+    }
+    let unit = 4 * grain.lo_min;
+    if grain.span() <= SMALL_SPAN {
+        integer_det::<1, 2, 4>(at_grain(p, grain.lo_min)).as_extended(unit)
+    } else if grain.span() <= MEDIUM_SPAN {
+        integer_det::<2, 4, 8>(at_grain(p, grain.lo_min)).as_extended(unit)
+    } else {
+        sparse_value(p).unwrap_or_else(|| {
+            integer_det::<DEG1, DEG2, DEG4>(at_grain(p, grain.lo_min)).as_extended(unit)
+        })
+    }
+}
+
+/// The determinant of [`integer`], in units of the fourth power of the
+/// integers' unit.
+fn integer_det<const D: usize, const M: usize, const R: usize>(
+    int: impl Fn(usize) -> [FixedInt<D>; 2],
+) -> FixedInt<R> {
     let d = int(3);
     let rel = |i: usize| {
         let q = int(i);
@@ -260,10 +336,9 @@ fn integer<const D: usize, const M: usize, const R: usize>(
     let minor = |u: &[FixedInt<D>; 2], v: &[FixedInt<D>; 2]| {
         FixedInt::<M>::mul(&u[0], &v[1]).sub(&FixedInt::mul(&v[0], &u[1]))
     };
-    let det = FixedInt::<R>::mul(&lift(&a), &minor(&b, &c))
+    FixedInt::<R>::mul(&lift(&a), &minor(&b, &c))
         .add(&FixedInt::mul(&lift(&b), &minor(&c, &a)))
-        .add(&FixedInt::mul(&lift(&c), &minor(&a, &b)));
-    det.sign()
+        .add(&FixedInt::mul(&lift(&c), &minor(&a, &b)))
 }
 
 /// The big-integer stage alone, exact for every finite input: the

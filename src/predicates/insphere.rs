@@ -5,9 +5,13 @@
 //!
 //! Stage ladder (see the [module docs](super)): 0 semi-static filter, 1
 //! filtered, 2 small-integer exact (and the lattice stage), 3 adaptive
-//! (`robust`), 4 scaled filter, 5 big-integer exact.
+//! (Shewchuk's, `adaptive.rs`), 4 scaled filter, 5 big-integer exact.
 
-use super::sparse::{Expansion, lifted_monomials, lifted_sign, product_terms, reference};
+use super::adaptive;
+use super::sparse::{
+    Either, Expansion, Monomials, lifted_monomials, lifted_sign, lifted_value, product_terms,
+    reference,
+};
 use crate::arith::exponent::{
     Grain, SmallInteger, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2,
     small_integer, unit_scale,
@@ -15,6 +19,7 @@ use crate::arith::exponent::{
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, DEG5, FixedInt};
 use crate::arith::lanes::Pair;
 use crate::arith::magnitude::{all_within, larger, largest_abs, zero_or_at_least};
+use crate::arith::scaled_float::ScaledFloat;
 use crate::arith::sparse_sum::{Diff, diff};
 use crate::sign::Sign;
 use glam::DVec3;
@@ -39,6 +44,13 @@ const GUARD_RELATIVE: f64 = pow2(-60);
 /// limb), 2x2 minors below `2^123` and lifts below `2^124` (two), 3x3
 /// minors below `2^186` (three), the determinant below `2^312` (five).
 const SMALL_SPAN: i32 = 60;
+
+/// Span up to which [`rounded_determinant`] uses two-limb differences:
+/// coordinates below `2^125`, differences below `2^126` (two limbs,
+/// signed), 2x2 minors below `2^253` and lifts below `3 * 2^252 < 2^254`
+/// (four), 3x3 minors below `3 * 2^379 < 2^381` (six), the determinant
+/// below `4 * 2^254 * 2^381 = 2^637` (ten).
+const MEDIUM_SPAN: i32 = 125;
 
 /// Span up to which Shewchuk's adaptive stages are exact once scaled below
 /// 1: non-zero values of degree `j <= 5` are at least `2^-900`.
@@ -209,6 +221,31 @@ struct Declined {
 /// difference guard makes the bound hold under underflow instead.
 #[inline(always)]
 fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined> {
+    let (det, declined) = stage_a(p, scaled_slack);
+    // Shewchuk's determinant is positive for "inside" under his opposite
+    // orientation convention: ours is its negation.
+    if det > declined.bound {
+        Ok(Sign::Negative)
+    } else if -det > declined.bound {
+        Ok(Sign::Positive)
+    } else {
+        Err(declined)
+    }
+}
+
+/// Stage 1 on unscaled input, for `robust_compat`: Shewchuk's stage A
+/// determinant (robust's value: see [`lifted_det`]) and its error bound,
+/// both NaN where the difference guard declines.
+#[inline(always)]
+pub(super) fn first_stage(p: &[DVec3; 5]) -> (f64, f64) {
+    let (det, declined) = stage_a(p, None);
+    (det, declined.bound)
+}
+
+/// Stage 1's determinant (Shewchuk's), its permanent and its bound `A *
+/// permanent + slack`; all NaN when the difference guard declined.
+#[inline(always)]
+fn stage_a(p: &[DVec3; 5], scaled_slack: Option<f64>) -> (f64, Declined) {
     let e = p[4];
     let (ae, be, ce, de) = (p[0] - e, p[1] - e, p[2] - e, p[3] - e);
     let slack = match scaled_slack {
@@ -223,10 +260,11 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined>
             if (m < GUARD_MIN_DIFF || m.is_nan())
                 && !zero_or_at_least(diffs.as_flattened(), GUARD_MIN_DIFF)
             {
-                return Err(Declined {
+                let nan = Declined {
                     permanent: f64::NAN,
                     bound: f64::NAN,
-                });
+                };
+                return (f64::NAN, nan);
             }
             0.0
         }
@@ -254,15 +292,7 @@ fn filtered(p: &[DVec3; 5], scaled_slack: Option<f64>) -> Result<Sign, Declined>
         + (abp * dz + bdp * az + dap * bz) * cl
         + (bcp * az + acp * bz + abp * cz) * dl;
     let bound = A * permanent + slack;
-    // Shewchuk's determinant is positive for "inside" under his opposite
-    // orientation convention: ours is its negation.
-    if det > bound {
-        Ok(Sign::Negative)
-    } else if -det > bound {
-        Ok(Sign::Positive)
-    } else {
-        Err(Declined { permanent, bound })
-    }
+    (det, Declined { permanent, bound })
 }
 
 /// Stages 2 to 5, for the few inputs the filter cannot certify.
@@ -314,19 +344,10 @@ fn exact(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3, stage1: Declined) -> 
         return Sign::Zero;
     }
     let s = scaled();
-    if grain.span() <= ADAPTIVE_SPAN {
-        let p = |v: DVec3| robust::Coord3D {
-            x: v.x,
-            y: v.y,
-            z: v.z,
-        };
-        return -Sign::of_f64(robust::insphere(
-            p(s[0]),
-            p(s[1]),
-            p(s[2]),
-            p(s[3]),
-            p(s[4]),
-        ));
+    if grain.span() <= ADAPTIVE_SPAN
+        && let Some(sign) = adaptive::insphere(&s)
+    {
+        return sign;
     }
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
@@ -357,14 +378,29 @@ fn at_grain<const D: usize>(p: &[DVec3; 5], lo: i32) -> impl Fn(usize) -> [Fixed
 /// of 5 differences), or expanded over the coordinates (120 permutations
 /// times 3, 360 products), whichever has fewer terms.
 pub(super) fn sparse_sign(p: [DVec3; 5]) -> Option<Sign> {
+    let (expansion, negate) = sparse_expansion(&p);
+    lifted_sign::<360, 5, 5>(expansion, negate).map(|s| -s)
+}
+
+/// `det5` (Shewchuk's in-sphere determinant: minus ours) within a relative
+/// `2^-52`, from the terms of [`sparse_sign`], or `None` when they do not
+/// fit.
+fn sparse_value(p: &[DVec3; 5]) -> Option<ScaledFloat> {
+    let (expansion, negate) = sparse_expansion(p);
+    lifted_value::<360, 5, 5>(expansion, negate)
+}
+
+/// The expansion of `det5` [`sparse_sign`] sums, and whether its sum is
+/// negated.
+fn sparse_expansion(p: &[DVec3; 5]) -> (Either<InsphereTranslated, Monomials<5, 3>>, bool) {
     let coords = p.map(|v| [v.x, v.y, v.z]);
     let k = reference(&coords);
-    let det5 = if product_terms(&insphere_translated(&coords, k)) <= 360 {
-        lifted_sign::<360, 5, 5>(insphere_translated(&coords, k), k % 2 == 1)
+    let translated = insphere_translated(&coords, k);
+    if product_terms(&translated) <= 360 {
+        (Either::First(translated), k % 2 == 1)
     } else {
-        lifted_sign::<360, 5, 5>(lifted_monomials::<5, 3>(&coords), false)
-    };
-    det5.map(|s| -s)
+        (Either::Second(lifted_monomials::<5, 3>(&coords)), false)
+    }
 }
 
 /// The products of `det4` with point `k` as the origin (see [`sparse_sign`]):
@@ -407,6 +443,39 @@ impl Expansion<5> for InsphereTranslated {
 fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
     int: impl Fn(usize) -> [FixedInt<D>; 3],
 ) -> Sign {
+    -integer_det::<D, M, T, R>(int).sign()
+}
+
+/// Shewchuk's in-sphere determinant of `p` (minus ours: positive for
+/// "inside" under his orientation) within a relative `2^-52`, with an
+/// unbounded exponent, for finite input: where the span is within
+/// `SMALL_SPAN`, the integers of [`integer`] at the coordinates' finest
+/// bit in one limb per difference (two within `MEDIUM_SPAN`), rounded once
+/// by [`FixedInt::as_extended`]; otherwise the sparse terms of
+/// [`sparse_sign`] ([`lifted_value`]), or the wide integers where those do
+/// not fit.
+pub(super) fn rounded_determinant(p: &[DVec3; 5]) -> ScaledFloat {
+    let grain = Grain::of(p.map(|v| v.to_array()).as_flattened());
+    if grain.all_zero() {
+        return ScaledFloat::ZERO;
+    }
+    let unit = 5 * grain.lo_min;
+    if grain.span() <= SMALL_SPAN {
+        integer_det::<1, 2, 3, 5>(at_grain(p, grain.lo_min)).as_extended(unit)
+    } else if grain.span() <= MEDIUM_SPAN {
+        integer_det::<2, 4, 6, 10>(at_grain(p, grain.lo_min)).as_extended(unit)
+    } else {
+        sparse_value(p).unwrap_or_else(|| {
+            integer_det::<DEG1, DEG2, DEG3, DEG5>(at_grain(p, grain.lo_min)).as_extended(unit)
+        })
+    }
+}
+
+/// `det[[r_i, lift_i]]` (Shewchuk's determinant) of [`integer`], in units
+/// of the fifth power of the integers' unit.
+fn integer_det<const D: usize, const M: usize, const T: usize, const R: usize>(
+    int: impl Fn(usize) -> [FixedInt<D>; 3],
+) -> FixedInt<R> {
     let e = int(4);
     let rel = |i: usize| {
         let q = int(i);
@@ -427,12 +496,11 @@ fn integer<const D: usize, const M: usize, const T: usize, const R: usize>(
             .add(&FixedInt::mul(&r[i][1], &r[i][1]))
             .add(&FixedInt::mul(&r[i][2], &r[i][2]))
     };
-    // det[[r_i, lift_i]] expanded along the lift column; we return minus it.
-    let det = FixedInt::<R>::mul(&lift(1), &m3(0, 2, 3))
+    // det[[r_i, lift_i]] expanded along the lift column.
+    FixedInt::<R>::mul(&lift(1), &m3(0, 2, 3))
         .add(&FixedInt::mul(&lift(3), &m3(0, 1, 2)))
         .sub(&FixedInt::mul(&lift(0), &m3(1, 2, 3)))
-        .sub(&FixedInt::mul(&lift(2), &m3(0, 1, 3)));
-    -det.sign()
+        .sub(&FixedInt::mul(&lift(2), &m3(0, 1, 3)))
 }
 
 /// The big-integer stage alone, exact for every finite input: the

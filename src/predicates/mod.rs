@@ -141,6 +141,7 @@
 //! 18 (1997); A. Meyer and S. Pion, "FPG: A code generator for fast and
 //! certified geometric predicates", RNC 2008.
 
+mod adaptive;
 #[cfg(feature = "alloc")]
 pub(crate) mod ball;
 mod batch;

@@ -1,7 +1,8 @@
 //! orient2d: the sign of `(b - a) x (c - a)`, exact for every finite input.
 //!
 //! Stage ladder (see the [module docs](super)): 1 filtered, 2
-//! small-integer exact, 3 adaptive (`robust`), 4 scaled filter, 5
+//! small-integer exact, 3 adaptive
+//! (Shewchuk's, `adaptive.rs`), 4 scaled filter, 5
 //! big-integer exact. The
 //! small-integer stage has a quick entry (`unit_integer`) tried first for
 //! every input the filter declines: it answers almost all near-degenerate,
@@ -12,13 +13,15 @@
     reason = "truncates values proven finite and below 2^62 to i64"
 )]
 
-use super::sparse::cross2_of;
+use super::adaptive;
+use super::sparse::{cross2_of, cross2_terms};
 use crate::arith::exponent::{
     Grain, TINY, in_range, pow2, scale_pow2, split, to_integer_i64, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, FixedInt};
 use crate::arith::lanes::Lanes;
-use crate::arith::sparse_sum::diff;
+use crate::arith::scaled_float::ScaledFloat;
+use crate::arith::sparse_sum::{diff, value_of_sum};
 use crate::sign::Sign;
 use glam::DVec2;
 
@@ -215,8 +218,7 @@ fn exact(a: DVec2, b: DVec2, c: DVec2, in_range: bool) -> Sign {
     }
     if span <= ADAPTIVE_SPAN {
         let s = scaled_once.unwrap_or_else(scaled);
-        let p = |v: DVec2| robust::Coord { x: v.x, y: v.y };
-        return Sign::of_f64(robust::orient2d(p(s[0]), p(s[1]), p(s[2])));
+        return adaptive::orient2d(s[0], s[1], s[2]);
     }
     if in_range && let Some(sign) = scaled_filter(scaled()) {
         return sign;
@@ -247,9 +249,35 @@ fn same_binade_integer(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
 /// `2^127`.
 #[inline]
 fn integer_det(x: [i64; 3], y: [i64; 3]) -> Sign {
-    let det = (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128
-        - (y[1] - y[0]) as i128 * (x[2] - x[0]) as i128;
-    Sign::from_i8(det.signum() as i8)
+    Sign::from_i8(integer_det_value(x, y).signum() as i8)
+}
+
+/// The determinant of [`integer_det`] itself.
+#[inline]
+fn integer_det_value(x: [i64; 3], y: [i64; 3]) -> i128 {
+    (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128 - (y[1] - y[0]) as i128 * (x[2] - x[0]) as i128
+}
+
+/// `(b - a) x (c - a)` within a relative `2^-52` (rounded once to 53
+/// significant bits where the span is small), with an unbounded exponent,
+/// for finite input: the integers of the small-integer stage (`i128`,
+/// converted with one rounding), or the sparse terms of [`sparse_sign`]
+/// summed from the largest down ([`value_of_sum`]), or the big-integer
+/// stage's integers (rounded by [`FixedInt::as_extended`]).
+pub(super) fn rounded_determinant(a: DVec2, b: DVec2, c: DVec2) -> ScaledFloat {
+    let gx = Grain::of(&[a.x, b.x, c.x]);
+    let gy = Grain::of(&[a.y, b.y, c.y]);
+    if gx.all_zero() || gy.all_zero() {
+        return ScaledFloat::ZERO;
+    }
+    let lo = gx.lo_min + gy.lo_min;
+    if gx.span().max(gy.span()) <= SMALL_SPAN {
+        let x = [a.x, b.x, c.x].map(|v| to_integer_i64(v, gx.lo_min));
+        let y = [a.y, b.y, c.y].map(|v| to_integer_i64(v, gy.lo_min));
+        return ScaledFloat::new(integer_det_value(x, y) as f64, lo);
+    }
+    sparse_value(a, b, c)
+        .unwrap_or_else(|| big_integer_det(a, b, c, gx.lo_min, gy.lo_min).as_extended(lo))
 }
 
 /// Stage 2: each axis as integers at its finest bit (`span <= 62`).
@@ -267,33 +295,48 @@ pub(super) fn sparse_sign(a: DVec2, b: DVec2, c: DVec2) -> Option<Sign> {
     cross2_of(b, c)
 }
 
+/// `(b - a) x (c - a)` within a relative `2^-52`, from the terms of
+/// [`sparse_sign`], or `None` when they do not fit.
+fn sparse_value(a: DVec2, b: DVec2, c: DVec2) -> Option<ScaledFloat> {
+    let b = [diff(b.x, a.x), diff(b.y, a.y)];
+    let c = [diff(c.x, a.x), diff(c.y, a.y)];
+    value_of_sum(&mut cross2_terms(b, c))
+}
+
 /// Stage 5: each axis as integers at its finest bit, whatever the span.
 /// Coordinates are below `2^2098` (a finite `f64` over its finest possible
 /// bit `2^-1074`), differences below `2^2099` (34 limbs) and the
 /// determinant below `2^4199` (67 limbs).
 pub(super) fn big_integer(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> Sign {
+    big_integer_det(a, b, c, lox, loy).sign()
+}
+
+/// The determinant of [`big_integer`], in units of `2^(lox + loy)`.
+fn big_integer_det(a: DVec2, b: DVec2, c: DVec2, lox: i32, loy: i32) -> FixedInt<DEG2> {
     type D = FixedInt<DEG1>;
     let dx = |p: DVec2, q: DVec2| D::from_f64(p.x, lox).sub(&D::from_f64(q.x, lox));
     let dy = |p: DVec2, q: DVec2| D::from_f64(p.y, loy).sub(&D::from_f64(q.y, loy));
     let left = FixedInt::<DEG2>::mul(&dx(b, a), &dy(c, a));
     let right = FixedInt::<DEG2>::mul(&dy(b, a), &dx(c, a));
-    left.sub(&right).sign()
+    left.sub(&right)
+}
+
+/// The big-integer stage alone, exact for every finite input: the
+/// reference the other stages' tests compare with.
+#[cfg(test)]
+pub(super) fn dense(a: DVec2, b: DVec2, c: DVec2) -> Sign {
+    let gx = Grain::of(&[a.x, b.x, c.x]);
+    let gy = Grain::of(&[a.y, b.y, c.y]);
+    if gx.all_zero() || gy.all_zero() {
+        return Sign::Zero;
+    }
+    big_integer(a, b, c, gx.lo_min, gy.lo_min)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::testing::{InputClass, SplitMix64, orient2d_case, step_ulps};
-
-    /// The big-integer stage alone: exact for every finite input.
-    fn dense(a: DVec2, b: DVec2, c: DVec2) -> Sign {
-        let gx = Grain::of(&[a.x, b.x, c.x]);
-        let gy = Grain::of(&[a.y, b.y, c.y]);
-        if gx.all_zero() || gy.all_zero() {
-            return Sign::Zero;
-        }
-        big_integer(a, b, c, gx.lo_min, gy.lo_min)
-    }
 
     #[test]
     fn unit_integer_is_exact_or_declines() {

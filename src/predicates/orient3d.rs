@@ -3,17 +3,19 @@
 //!
 //! Stage ladder (see the [module docs](super)): 0 semi-static filter, 1
 //! filtered, 2 small-integer exact (and the lattice stage), 3 adaptive
-//! (`robust`), 4 scaled filter, 5 big-integer exact.
+//! (Shewchuk's, `adaptive.rs`), 4 scaled filter, 5 big-integer exact.
 
+use super::adaptive;
 use super::det::{A, certifies, det3_wide, determinant, small_det3, stage_a_rows};
-use super::sparse::det3;
+use super::sparse::{det3, det3_terms};
 use crate::arith::exponent::{
     Grain, TINY, below_lattice, in_range, lowest_bit, pow2, scale_pow2, unit_integers, unit_scale,
 };
 use crate::arith::fixed_int::{DEG1, DEG2, DEG3, FixedInt};
 use crate::arith::lanes::Lanes;
 use crate::arith::magnitude::{all_within, larger, larger3};
-use crate::arith::sparse_sum::diff;
+use crate::arith::scaled_float::ScaledFloat;
+use crate::arith::sparse_sum::{diff, value_of_sum};
 use crate::sign::Sign;
 use glam::DVec3;
 
@@ -21,6 +23,12 @@ use glam::DVec3;
 /// differences below `2^62` (one limb), 2x2 minors below `2^125` (two),
 /// the determinant below `3 * 2^187 < 2^189` (three).
 const SMALL_SPAN: i32 = 61;
+
+/// Span (per axis) up to which [`rounded_determinant`] uses two-limb
+/// differences: coordinates below `2^125`, differences below `2^126` (two
+/// limbs, signed), minors below `2^253` (four), the determinant below `3 *
+/// 2^379 < 2^381` (six).
+const MEDIUM_SPAN: i32 = 125;
 
 /// Span (per axis) up to which Shewchuk's adaptive stages are exact once
 /// each axis is scaled below 1: every non-zero value of degree `j <= 3`
@@ -252,13 +260,10 @@ fn exact(points: &[DVec3; 4], in_range: bool) -> Sign {
     // Every span is more than `SMALL_SPAN` here (`unit_integer` declined).
     let span = grains.iter().map(|g| g.span()).max().unwrap_or(0);
     let s = scaled();
-    if span <= ADAPTIVE_SPAN {
-        let p = |v: DVec3| robust::Coord3D {
-            x: v.x,
-            y: v.y,
-            z: v.z,
-        };
-        return -Sign::of_f64(robust::orient3d(p(s[0]), p(s[1]), p(s[2]), p(s[3])));
+    if span <= ADAPTIVE_SPAN
+        && let Some(sign) = adaptive::orient3d(s[0], s[1], s[2], s[3])
+    {
+        return sign;
     }
     if in_range && let Some(sign) = scaled_filter(s) {
         return sign;
@@ -273,6 +278,13 @@ pub(super) fn sparse_sign(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Option<Sign
     det3(rel(b), rel(c), rel(d))
 }
 
+/// `det[b - a, c - a, d - a]` within a relative `2^-52`, from the terms of
+/// [`sparse_sign`], or `None` when they do not fit.
+fn sparse_value([a, b, c, d]: &[DVec3; 4]) -> Option<ScaledFloat> {
+    let rel = |p: DVec3| [diff(p.x, a.x), diff(p.y, a.y), diff(p.z, a.z)];
+    value_of_sum(&mut det3_terms(rel(*b), rel(*c), rel(*d)))
+}
+
 /// Stage 5: each axis as integers at its finest bit `lo[axis]`, the
 /// determinant in `D`-limb differences, `M`-limb minors and an `R`-limb
 /// result. `<34, 67, 100>` holds every finite input: coordinates below `2^2098` (a finite `f64` over its
@@ -282,6 +294,38 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
     p: &[DVec3; 4],
     lo: [i32; 3],
 ) -> Sign {
+    integer_det::<D, M, R>(p, lo).sign()
+}
+
+/// `det[b - a, c - a, d - a]` within a relative `2^-52`, with an unbounded
+/// exponent, for finite input: where every span is within `SMALL_SPAN`,
+/// the integers of [`integer`] at each axis's finest bit in one limb per
+/// difference (two within `MEDIUM_SPAN`), rounded once by
+/// [`FixedInt::as_extended`]; otherwise the
+/// sparse terms of [`sparse_sign`] ([`value_of_sum`]), or the wide
+/// integers where those do not fit.
+pub(super) fn rounded_determinant(p: &[DVec3; 4]) -> ScaledFloat {
+    let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
+    let grains = [0, 1, 2].map(|k| Grain::of(&axis(k)));
+    if grains.iter().any(|g| g.all_zero()) {
+        return ScaledFloat::ZERO;
+    }
+    let lo = grains.map(|g| g.lo_min);
+    let unit = lo[0] + lo[1] + lo[2];
+    if grains.iter().all(|g| g.span() <= SMALL_SPAN) {
+        integer_det::<1, 2, 3>(p, lo).as_extended(unit)
+    } else if grains.iter().all(|g| g.span() <= MEDIUM_SPAN) {
+        integer_det::<2, 4, 6>(p, lo).as_extended(unit)
+    } else {
+        sparse_value(p).unwrap_or_else(|| integer_det::<DEG1, DEG2, DEG3>(p, lo).as_extended(unit))
+    }
+}
+
+/// The determinant of [`integer`], in units of `2^(lo[0] + lo[1] + lo[2])`.
+fn integer_det<const D: usize, const M: usize, const R: usize>(
+    p: &[DVec3; 4],
+    lo: [i32; 3],
+) -> FixedInt<R> {
     let int = |v: DVec3| {
         [
             FixedInt::<D>::from_f64(v.x, lo[0]),
@@ -294,22 +338,25 @@ pub(super) fn integer<const D: usize, const M: usize, const R: usize>(
         let q = int(v);
         [q[0].sub(&a[0]), q[1].sub(&a[1]), q[2].sub(&a[2])]
     };
-    det3_wide::<D, M, R>(&[rel(p[1]), rel(p[2]), rel(p[3])]).sign()
+    det3_wide::<D, M, R>(&[rel(p[1]), rel(p[2]), rel(p[3])])
+}
+
+/// The big-integer stage alone, exact for every finite input: the
+/// reference the other stages' tests compare with.
+#[cfg(test)]
+pub(super) fn dense(p: [DVec3; 4]) -> Sign {
+    let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
+    let g = [0, 1, 2].map(|k| Grain::of(&axis(k)));
+    if g.iter().any(|g| g.all_zero()) {
+        return Sign::Zero;
+    }
+    integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::testing::{InputClass, SplitMix64, orient3d_case};
-
-    fn dense(p: [DVec3; 4]) -> Sign {
-        let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
-        let g = [0, 1, 2].map(|k| Grain::of(&axis(k)));
-        if g.iter().any(|g| g.all_zero()) {
-            return Sign::Zero;
-        }
-        integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
-    }
 
     /// Inputs whose per-axis largest differences sit at the edges of the
     /// semi-static filter's range (`2^-290`, `2^290`), some with a

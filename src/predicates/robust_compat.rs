@@ -1,10 +1,11 @@
 //! The `robust` crate's interface, exact for every finite input: a door for
 //! code written against `robust` (Delaunay triangulators, mesh generators).
 //!
-//! Same names, same input types, same argument order, same sign conventions
-//! and the same `f64` return as `robust` 1.x, so switching is one `use`
-//! line. Where `robust` answers from its first stage (almost every ordinary
-//! input) the value returned is bit for bit the one `robust` returns; where
+//! Same names, point types declared as `robust`'s, same argument order,
+//! same sign conventions and the same `f64` return as `robust` 1.x, so
+//! switching is one `use` line. Where `robust`'s first stage is accurate to
+//! `2^-40` of itself (almost every ordinary input) the value returned is
+//! bit for bit the one `robust` returns; where
 //! its products underflow or overflow (coordinates near `1e-160` or
 //! `1e+160`, `1e-300` beside `1e+300`) `robust` can return a wrong sign, a
 //! zero or NaN, and these functions still return the exact sign.
@@ -18,7 +19,8 @@
 //! assert!(orient2d(c(0.0, 0.0), c(1.0, 0.0), c(0.0, 1.0)) > 0.0);
 //! assert!(incircle(c(1.0, 0.0), c(0.0, 1.0), c(-1.0, 0.0), c(0.0, -1.0)) == 0.0);
 //! // The products underflow: robust's answer is 0.0 ("collinear").
-//! assert!(robust::orient2d(c(0.0, 0.0), c(1e-200, 0.0), c(0.0, 1e-200)) == 0.0);
+//! let r = |x: f64, y: f64| robust::Coord { x, y };
+//! assert!(robust::orient2d(r(0.0, 0.0), r(1e-200, 0.0), r(0.0, 1e-200)) == 0.0);
 //! assert!(orient2d(c(0.0, 0.0), c(1e-200, 0.0), c(0.0, 1e-200)) > 0.0);
 //! ```
 //!
@@ -34,13 +36,15 @@
 //! ```
 //!
 //! # The types
-//! [`Coord`] and [`Coord3D`] are `robust`'s own types, re-exported, not
-//! look-alikes: values, type annotations and function pointers written for
-//! `robust` keep compiling, and code halfway through a switch can pass the
-//! same points to both (no `From` conversion is needed: there is one type).
-//! The price is that this module's signature follows `robust`'s major
-//! version (today 1.x; Cargo unifies a user's `robust` 1.x with this
-//! crate's, so the types are the same).
+//! [`Coord`] and [`Coord3D`] are this crate's own, declared as `robust`
+//! 1.2 declares its: the same public fields, the same `T: Into<f64>`
+//! bound, the same derives (`Copy`, `Clone`, `Debug`, `PartialEq`) and no
+//! other trait. Code written against `robust`'s types compiles against
+//! these unchanged; they are distinct types, though, so a program that
+//! keeps both crates converts between them field by field. To make every
+//! `robust` call of a whole dependency tree exact, with one `Coord` type,
+//! the `robust` drop-in crate of this repository replaces `robust` itself
+//! (`docs/drop-in.md`).
 //!
 //! # Sign conventions (Shewchuk's)
 //! - [`orient2d`]`(pa, pb, pc)` is positive when `pa, pb, pc` turn
@@ -58,21 +62,29 @@
 //! `tests/robust_compat.rs` checks each against `robust` itself.
 //!
 //! # The returned value
-//! Its sign is the exact sign of the determinant: `> 0.0`, `< 0.0` and
-//! `== 0.0` give the exact answer for every finite input. Its magnitude is
-//! - `0.0` exactly (positive zero) when the determinant is zero;
-//! - otherwise, Shewchuk's first-stage `f64` evaluation of the determinant
-//!   (`robust`'s, same formula and order of operations) when it is finite and
-//!   of the exact sign; wherever `robust` returns that evaluation with the
-//!   exact sign (its first stage certified it, as it does for almost all
-//!   ordinary inputs), this is its return value to the bit;
-//! - otherwise (that evaluation underflowed to zero, overflowed, or has the
-//!   wrong sign on a near-degenerate input) `f64::MIN_POSITIVE` with the exact
-//!   sign, a value that carries the sign and nothing else.
+//! Its sign is the exact sign of the determinant `D`: `> 0.0`, `< 0.0` and
+//! `== 0.0` give the exact answer for every finite input. Its magnitude:
+//! - `D == 0`: `0.0` (positive zero; `robust` sometimes returns `-0.0`);
+//! - `D` a normal number: within `2^-39 |D|` of `D` (a relative error below
+//!   `1.9e-12`). Where Shewchuk's first-stage `f64` evaluation (`robust`'s,
+//!   same formula and order of operations) has an error bound below `2^-40`
+//!   of itself, that evaluation is returned: wherever `robust` returns it
+//!   too, the two agree to the bit (almost every ordinary input). Elsewhere
+//!   it is `D` computed exactly and rounded: correctly where the
+//!   coordinates span at most about 125 bits (orient2d: 62), within
+//!   `2^-52 |D|` otherwise;
+//! - `D` below the normal range: within `2^-1073` of `D` (two steps of the
+//!   subnormal grid), and never zero (the smallest subnormal, with `D`'s
+//!   sign, where `D` rounds to zero);
+//! - `|D|` beyond `f64::MAX`: an infinity of `D`'s sign.
 //!
-//! `robust`'s later stages return a closer estimate of the determinant on
-//! near-degenerate inputs; these functions do not (the sign comes from
-//! [`super`]'s exact ladder, which does not produce one).
+//! Where `robust`'s own value has the exact sign, it is within its stage's
+//! error bound of `D` (for its first stage, `3.3e-16` times the sum of the
+//! magnitudes of the products, e.g. `|detleft| + |detright|` for
+//! orient2d); its stages certify a sign, not digits, so that bound can
+//! exceed `|D|`: `robust`'s value is then at least `|D| / 2` but may be
+//! several times `|D|`. Where the two differ, these functions' value is
+//! `D` rounded, within `2^-52 |D|`.
 //!
 //! # Non-finite input
 //! A NaN or infinite coordinate gives NaN: every comparison with it is false,
@@ -80,47 +92,89 @@
 //! panics or allocates.
 //!
 //! # Performance
-//! One call costs the matching predicate of [`super`] plus the first-stage
-//! evaluation beside it, the `f64` determinant alone (no error bound), so
-//! the sign is decided once, by the exact ladder.
+//! Where the first-stage value is within its bound (almost every ordinary
+//! input), a call costs that evaluation and its bound, as `robust`'s
+//! first stage does. Elsewhere it first decides the exact sign with
+//! [`super`]'s predicates, and an exact zero costs no more; a non-zero `D`
+//! is then computed exactly: as integers at the coordinates' finest bits
+//! (one or two limbs each) where they span at most about 125 bits
+//! (orient2d: 62), otherwise as its exact terms
+//! summed from the largest down until the rest is below `2^-60` of the
+//! sum. `docs/drop-in.md` has the figures.
 
+use super::det;
+use super::incircle as circle;
+use super::insphere as sphere;
+use super::orient2d as o2;
+use super::orient3d as o3;
+use crate::arith::exponent::{TINY, pow2};
+use crate::arith::scaled_float::ScaledFloat;
 use crate::sign::Sign;
 use glam::{DVec2, DVec3};
 
-#[doc(inline)]
-pub use robust::{Coord, Coord3D};
+/// `2^40`: a first-stage value is returned when its error bound is below
+/// `2^-40` of it; then `|value - D| < 2^-40 |value|`, so `|D| > (1 -
+/// 2^-40) |value|` and `|value - D| < 2^-40 / (1 - 2^-40) |D| < 2^-39 |D|`.
+const RELATIVE: f64 = pow2(40);
+
+/// A two-dimensional point, as `robust::Coord`: its coordinates convert
+/// to `f64` exactly for `f64`, `f32` and the integer types `Into<f64>`
+/// accepts.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Coord<T: Into<f64>> {
+    /// The first coordinate.
+    pub x: T,
+    /// The second coordinate.
+    pub y: T,
+}
+
+/// A three-dimensional point, as `robust::Coord3D`.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Coord3D<T: Into<f64>> {
+    /// The first coordinate.
+    pub x: T,
+    /// The second coordinate.
+    pub y: T,
+    /// The third coordinate.
+    pub z: T,
+}
 
 /// Positive when `pa, pb, pc` occur in counterclockwise order (`pc` lies to
 /// the left of the directed line `pa, pb`), negative when clockwise, `0.0`
 /// when they are collinear: `robust::orient2d`, exact.
 ///
 /// # Accuracy
-/// The sign is exact for every finite input; the magnitude is described in
-/// the [module docs](self#the-returned-value). A NaN or infinite coordinate
-/// gives NaN.
+/// The sign is exact for every finite input; the magnitude is within
+/// `2^-39` of the determinant's where that is a normal number (the [module
+/// docs](self#the-returned-value) say the rest). A NaN or infinite
+/// coordinate gives NaN.
 ///
 /// ```
 /// use exactray::predicates::robust_compat::{Coord, orient2d};
 /// let c = |x: f64, y: f64| Coord { x, y };
-/// assert!(orient2d(c(0.0, 0.0), c(1.0, 0.0), c(0.0, 1.0)) > 0.0);
+/// assert_eq!(orient2d(c(0.0, 0.0), c(2.0, 0.0), c(0.0, 3.0)), 6.0);
 /// // On the line y = x, whatever the rounding of 0.1, 0.2 and 0.3.
 /// assert!(orient2d(c(0.1, 0.1), c(0.2, 0.2), c(0.3, 0.3)) == 0.0);
+/// // The products overflow: twice the area, 2^301, all the same.
+/// let (a, b) = (c(-2f64.powi(600), -2f64.powi(600)), c(2f64.powi(600), 2f64.powi(600)));
+/// assert_eq!(orient2d(a, b, c(0.0, 2f64.powi(-300))), 2f64.powi(301));
 /// ```
 #[inline]
 pub fn orient2d<T: Into<f64>>(pa: Coord<T>, pb: Coord<T>, pc: Coord<T>) -> f64 {
     let (a, b, c) = (dvec2(pa), dvec2(pb), dvec2(pc));
-    // Shewchuk's stage A, in robust's order.
-    let detleft = (a.x - c.x) * (b.y - c.y);
-    let detright = (a.y - c.y) * (b.x - c.x);
-    let first_stage = detleft - detright;
-    // A finite first stage proves every coordinate finite: each coordinate
-    // enters it through sums, differences and products only, and a NaN or
-    // an infinity survives every one of those (as itself or as NaN).
-    // Otherwise ask the coordinates.
-    if !first_stage.is_finite() && !finite2(&[a, b, c]) {
-        return f64::NAN;
+    // Shewchuk's stage A, in robust's order, and its bound `A detsum +
+    // UNDERFLOW_SLACK`, compared as stage A compares it (no subnormal
+    // operand on this path).
+    let p = o2::products(a, b, c);
+    let (first, detsum, _) = o2::stage_a_lanes(p.x, p.y);
+    if first.abs() - (RELATIVE * o2::A) * detsum > RELATIVE * o2::UNDERFLOW_SLACK {
+        return first;
     }
-    with_exact_sign(super::orient2d(a, b, c), first_stage)
+    rounded(
+        finite2(&[a, b, c]),
+        || o2::orient2d(a, b, c),
+        || o2::rounded_determinant(a, b, c),
+    )
 }
 
 /// Positive when `pd` lies below the plane through `pa, pb, pc` (the side
@@ -129,16 +183,16 @@ pub fn orient2d<T: Into<f64>>(pa: Coord<T>, pb: Coord<T>, pc: Coord<T>) -> f64 {
 /// [`super::orient3d`].
 ///
 /// # Accuracy
-/// The sign is exact for every finite input; the magnitude is described in
-/// the [module docs](self#the-returned-value). A NaN or infinite coordinate
-/// gives NaN.
+/// As [`orient2d`]'s: the exact sign, and the magnitude within `2^-39` of
+/// the determinant's where that is a normal number. A NaN or infinite
+/// coordinate gives NaN.
 ///
 /// ```
 /// use exactray::predicates::robust_compat::{Coord3D, orient3d};
 /// let p = |x: f64, y: f64, z: f64| Coord3D { x, y, z };
 /// let (a, b, c) = (p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0));
 /// // a, b, c are counterclockwise seen from +z: +z is above.
-/// assert!(orient3d(a, b, c, p(0.0, 0.0, 1.0)) < 0.0);
+/// assert_eq!(orient3d(a, b, c, p(0.0, 0.0, 1.0)), -1.0);
 /// assert!(orient3d(a, b, c, p(0.0, 0.0, -1.0)) > 0.0);
 /// assert!(orient3d(a, b, c, p(0.3, 0.7, 0.0)) == 0.0);
 /// ```
@@ -150,17 +204,18 @@ pub fn orient3d<T: Into<f64>>(
     pd: Coord3D<T>,
 ) -> f64 {
     let (a, b, c, d) = (dvec3(pa), dvec3(pb), dvec3(pc), dvec3(pd));
-    // Shewchuk's stage A, in robust's order.
-    let (ad, bd, cd) = (a - d, b - d, c - d);
-    let first_stage = ad.z * (bd.x * cd.y - cd.x * bd.y)
-        + bd.z * (cd.x * ad.y - ad.x * cd.y)
-        + cd.z * (ad.x * bd.y - bd.x * ad.y);
-    // Why a finite value proves finite input: see `orient2d`.
-    if !first_stage.is_finite() && !finite3(&[a, b, c, d]) {
-        return f64::NAN;
+    // Shewchuk's stage A with `d` as the origin, in robust's order.
+    let rows = [a - d, b - d, c - d].map(|v| v.to_array());
+    let (first, permanent, _, zsum) = det::stage_a_rows(rows[0], rows[1], rows[2]);
+    if det::within(first, permanent, zsum, RELATIVE) {
+        return first;
     }
     // Shewchuk's orientation is CGAL's with the sign flipped.
-    with_exact_sign(-super::orient3d(a, b, c, d), first_stage)
+    rounded(
+        finite3(&[a, b, c, d]),
+        || o3::orient3d(a, b, c, d),
+        || o3::rounded_determinant(&[a, b, c, d]).neg(),
+    )
 }
 
 /// Positive when `pd` lies inside the circle through `pa, pb, pc`, negative
@@ -168,9 +223,9 @@ pub fn orient3d<T: Into<f64>>(
 /// counterclockwise or the sign is reversed: `robust::incircle`, exact.
 ///
 /// # Accuracy
-/// The sign is exact for every finite input; the magnitude is described in
-/// the [module docs](self#the-returned-value). A NaN or infinite coordinate
-/// gives NaN.
+/// As [`orient2d`]'s: the exact sign, and the magnitude within `2^-39` of
+/// the determinant's where that is a normal number. A NaN or infinite
+/// coordinate gives NaN.
 ///
 /// ```
 /// use exactray::predicates::robust_compat::{Coord, incircle};
@@ -183,19 +238,16 @@ pub fn orient3d<T: Into<f64>>(
 #[inline]
 pub fn incircle<T: Into<f64>>(pa: Coord<T>, pb: Coord<T>, pc: Coord<T>, pd: Coord<T>) -> f64 {
     let (a, b, c, d) = (dvec2(pa), dvec2(pb), dvec2(pc), dvec2(pd));
-    // Shewchuk's stage A, in robust's order.
-    let (ad, bd, cd) = (a - d, b - d, c - d);
-    let alift = ad.x * ad.x + ad.y * ad.y;
-    let blift = bd.x * bd.x + bd.y * bd.y;
-    let clift = cd.x * cd.x + cd.y * cd.y;
-    let first_stage = alift * (bd.x * cd.y - cd.x * bd.y)
-        + blift * (cd.x * ad.y - ad.x * cd.y)
-        + clift * (ad.x * bd.y - bd.x * ad.y);
-    // Why a finite value proves finite input: see `orient2d`.
-    if !first_stage.is_finite() && !finite2(&[a, b, c, d]) {
-        return f64::NAN;
+    // Shewchuk's stage A, in robust's order; NaN where its guard declines.
+    let (first, bound) = circle::first_stage(a, b, c, d);
+    if first.abs() > RELATIVE * bound {
+        return first;
     }
-    with_exact_sign(super::incircle(a, b, c, d), first_stage)
+    rounded(
+        finite2(&[a, b, c, d]),
+        || circle::incircle(a, b, c, d),
+        || circle::rounded_determinant(&[a, b, c, d]),
+    )
 }
 
 /// Positive when `pe` lies inside the sphere through `pa, pb, pc, pd`,
@@ -205,9 +257,9 @@ pub fn incircle<T: Into<f64>>(pa: Coord<T>, pb: Coord<T>, pc: Coord<T>, pd: Coor
 /// [`super::insphere`].
 ///
 /// # Accuracy
-/// The sign is exact for every finite input; the magnitude is described in
-/// the [module docs](self#the-returned-value). A NaN or infinite coordinate
-/// gives NaN.
+/// As [`orient2d`]'s: the exact sign, and the magnitude within `2^-39` of
+/// the determinant's where that is a normal number. A NaN or infinite
+/// coordinate gives NaN.
 ///
 /// ```
 /// use exactray::predicates::robust_compat::{Coord3D, insphere, orient3d};
@@ -227,21 +279,24 @@ pub fn insphere<T: Into<f64>>(
     pd: Coord3D<T>,
     pe: Coord3D<T>,
 ) -> f64 {
-    let (a, b, c, d, e) = (dvec3(pa), dvec3(pb), dvec3(pc), dvec3(pd), dvec3(pe));
-    let first_stage = insphere_first_stage(a, b, c, d, e);
-    // Why a finite value proves finite input: see `orient2d`.
-    if !first_stage.is_finite() && !finite3(&[a, b, c, d, e]) {
-        return f64::NAN;
+    let p = [dvec3(pa), dvec3(pb), dvec3(pc), dvec3(pd), dvec3(pe)];
+    // Shewchuk's stage A, in robust's order (positive inside under his
+    // orientation); NaN where its guard declines.
+    let (first, bound) = sphere::first_stage(&p);
+    if first.abs() > RELATIVE * bound {
+        return first;
     }
-    // Shewchuk's in-sphere assumes his orientation, CGAL's the opposite one.
-    with_exact_sign(-super::insphere(a, b, c, d, e), first_stage)
+    rounded(
+        finite3(&p),
+        || sphere::insphere(p[0], p[1], p[2], p[3], p[4]),
+        || sphere::rounded_determinant(&p),
+    )
 }
 
-/// Shewchuk's stage A of `insphere`, in robust's order of operations, so
-/// that a value robust certifies is returned to the bit. The crate's own
-/// filter computes the same expression today, but it is free to change its
-/// order (or its formula) for speed; this one is pinned to robust's.
-#[inline(always)]
+/// Shewchuk's stage A of `insphere`, in robust's order of operations: the
+/// reference `insphere`'s paired filter is checked against, so that the
+/// value returned is robust's to the bit.
+#[cfg(test)]
 pub(super) fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DVec3) -> f64 {
     let (ae, be, ce, de) = (a - e, b - e, c - e, d - e);
     let ab = ae.x * be.y - be.x * ae.y;
@@ -264,23 +319,26 @@ pub(super) fn insphere_first_stage(a: DVec3, b: DVec3, c: DVec3, d: DVec3, e: DV
     (dlift * abc - clift * dab) + (blift * cda - alift * bcd)
 }
 
-/// The value to return for an exact sign, given the first-stage evaluation
-/// (the rule of the [module docs](self#the-returned-value)).
-#[inline(always)]
-fn with_exact_sign(exact: Sign, first_stage: f64) -> f64 {
-    // -1.0, 0.0 or 1.0: the product with a finite first stage is exact, and
-    // positive only where their signs agree (false for NaN). Written as one
-    // select rather than a match on the sign, which a random sign would
-    // mispredict on every other call.
-    let sign = f64::from(exact.as_i8());
-    let agrees = first_stage * sign > 0.0 && first_stage.abs() < f64::INFINITY;
-    // On disagreement `sign * MIN_POSITIVE` is the sign-only value, and
-    // `+0.0` for an exact zero.
-    if agrees {
-        first_stage
-    } else {
-        sign * f64::MIN_POSITIVE
+/// The value for an input the first stage could not answer within
+/// `2^-40`: NaN for non-finite input, `0.0` where the predicate's exact
+/// sign (`sign()`, the crate's ladder: cheaper than the value) is zero,
+/// otherwise the exact determinant `exact()` rounded to `f64` (the rule of
+/// the [module docs](self#the-returned-value)), never zero.
+#[cold]
+#[inline(never)]
+fn rounded(finite: bool, sign: impl FnOnce() -> Sign, exact: impl FnOnce() -> ScaledFloat) -> f64 {
+    if !finite {
+        return f64::NAN;
     }
+    if sign() == Sign::Zero {
+        return 0.0;
+    }
+    let d = exact();
+    let v = d.to_f64();
+    if v == 0.0 && !d.is_zero() {
+        return if d.is_negative() { -TINY } else { TINY };
+    }
+    v
 }
 
 #[inline(always)]
@@ -293,15 +351,12 @@ fn dvec3<T: Into<f64>>(p: Coord3D<T>) -> DVec3 {
     DVec3::new(p.x.into(), p.y.into(), p.z.into())
 }
 
-/// Whether every coordinate is finite (the cold path of a non-finite first
-/// stage: overflow on finite input, or a NaN or infinite coordinate).
-#[cold]
+/// Whether every coordinate is finite.
 fn finite2(points: &[DVec2]) -> bool {
     points.iter().all(|p| p.is_finite())
 }
 
-/// Whether every coordinate is finite; see [`finite2`].
-#[cold]
+/// Whether every coordinate is finite.
 fn finite3(points: &[DVec3]) -> bool {
     points.iter().all(|p| p.is_finite())
 }

@@ -25,7 +25,8 @@
 //! lifted determinants, the cheapest origin, and the 2x2 and 3x3
 //! determinants of exact differences.
 
-use crate::arith::sparse_sum::{Diff, MAX_TERMS, Terms, diff, sign_of_sum};
+use crate::arith::scaled_float::ScaledFloat;
+use crate::arith::sparse_sum::{Diff, MAX_TERMS, Terms, diff, sign_of_sum, value_of_sum};
 use crate::sign::Sign;
 
 /// An expansion of a determinant into signed products of `K` differences.
@@ -40,9 +41,40 @@ pub(super) fn lifted_sign<const N: usize, const L: usize, const K: usize>(
     expansion: impl Expansion<K>,
     negate: bool,
 ) -> Option<Sign> {
+    sign_of_sum(&mut lifted_terms::<N, L, K>(expansion)).map(|s| if negate { -s } else { s })
+}
+
+/// The sum of an expansion's products within a relative `2^-52`
+/// ([`value_of_sum`]), negated with `negate`; `None` when they do not fit.
+pub(super) fn lifted_value<const N: usize, const L: usize, const K: usize>(
+    expansion: impl Expansion<K>,
+    negate: bool,
+) -> Option<ScaledFloat> {
+    value_of_sum(&mut lifted_terms::<N, L, K>(expansion)).map(|v| if negate { v.neg() } else { v })
+}
+
+/// An expansion's products as the terms of a sum.
+fn lifted_terms<const N: usize, const L: usize, const K: usize>(
+    expansion: impl Expansion<K>,
+) -> Terms<N, L> {
     let mut terms = Terms::<N, L>::new();
     expansion.products(&mut |neg, f| terms.push_product(neg, &f));
-    sign_of_sum(&mut terms).map(|s| if negate { -s } else { s })
+    terms
+}
+
+/// One of two expansions of one determinant, whichever a predicate picked.
+pub(super) enum Either<A, B> {
+    First(A),
+    Second(B),
+}
+
+impl<const K: usize, A: Expansion<K>, B: Expansion<K>> Expansion<K> for Either<A, B> {
+    fn products(&self, push: &mut impl FnMut(bool, [Diff; K])) {
+        match self {
+            Either::First(a) => a.products(push),
+            Either::Second(b) => b.products(push),
+        }
+    }
 }
 
 /// How many terms the products of an expansion add up to.
@@ -120,22 +152,32 @@ pub(super) fn reference<const N: usize, const D: usize>(p: &[[f64; D]; N]) -> us
 /// The exact sign of `e x f` for exact differences `e`, `f`, or `None`
 /// when the terms do not fit.
 pub(super) fn cross2_of(e: [Diff; 2], f: [Diff; 2]) -> Option<Sign> {
+    sign_of_sum(&mut cross2_terms(e, f))
+}
+
+/// The terms of `e x f`, for [`cross2_of`] and its value.
+pub(super) fn cross2_terms(e: [Diff; 2], f: [Diff; 2]) -> Terms<8, 2> {
     let mut terms = Terms::<8, 2>::new();
     terms.push_product(false, &[e[0], f[1]]);
     terms.push_product(true, &[e[1], f[0]]);
-    sign_of_sum(&mut terms)
+    terms
 }
 
 /// The exact sign of `det[b, c, d]` for rows of exact differences (also
 /// the implicit points' weights).
 pub(super) fn det3(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Option<Sign> {
+    sign_of_sum(&mut det3_terms(b, c, d))
+}
+
+/// The terms of `det[b, c, d]`, for [`det3`] and its value.
+pub(super) fn det3_terms(b: [Diff; 3], c: [Diff; 3], d: [Diff; 3]) -> Terms<MAX_TERMS, 3> {
     let mut terms = Terms::<MAX_TERMS, 3>::new();
     // Expanded along z: z_u * (x_v y_w - x_w y_v) over (u, v, w) cyclic.
     for (u, v, w) in [(b, c, d), (c, d, b), (d, b, c)] {
         terms.push_product(false, &[u[2], v[0], w[1]]);
         terms.push_product(true, &[u[2], w[0], v[1]]);
     }
-    sign_of_sum(&mut terms)
+    terms
 }
 
 #[cfg(test)]
@@ -144,8 +186,7 @@ mod tests {
     use super::super::insphere::{self, insphere_translated};
     use super::super::{orient2d as o2, orient3d as o3};
     use super::*;
-    use crate::arith::exponent::{Grain, pow2};
-    use crate::arith::fixed_int::{DEG1, DEG2, DEG3};
+    use crate::arith::exponent::pow2;
     use crate::testing::{
         InputClass, SplitMix64, incircle_case, insphere_case, orient2d_case, orient3d_case,
     };
@@ -195,24 +236,6 @@ mod tests {
         }
     }
 
-    fn dense2(p: [DVec2; 3]) -> Sign {
-        let gx = Grain::of(&[p[0].x, p[1].x, p[2].x]);
-        let gy = Grain::of(&[p[0].y, p[1].y, p[2].y]);
-        if gx.all_zero() || gy.all_zero() {
-            return Sign::Zero;
-        }
-        o2::big_integer(p[0], p[1], p[2], gx.lo_min, gy.lo_min)
-    }
-
-    fn dense3(p: [DVec3; 4]) -> Sign {
-        let axis = |k: usize| [p[0][k], p[1][k], p[2][k], p[3][k]];
-        let g = [0, 1, 2].map(|k| Grain::of(&axis(k)));
-        if g.iter().any(|g| g.all_zero()) {
-            return Sign::Zero;
-        }
-        o3::integer::<DEG1, DEG2, DEG3>(&p, g.map(|g| g.lo_min))
-    }
-
     #[test]
     fn matches_dense_integers() {
         let mut rng = SplitMix64::new(2024);
@@ -220,12 +243,12 @@ mod tests {
         for i in 0..60_000 {
             let (p2, p3) = case(i, &mut rng, orient2d_case, orient3d_case);
             match o2::sparse_sign(p2[0], p2[1], p2[2]) {
-                Some(s) => assert_eq!(s, dense2(p2), "{p2:?}"),
+                Some(s) => assert_eq!(s, o2::dense(p2[0], p2[1], p2[2]), "{p2:?}"),
                 None => declined += 1,
             }
             match o3::sparse_sign(p3[0], p3[1], p3[2], p3[3]) {
                 Some(s) => {
-                    assert_eq!(s, dense3(p3), "{p3:?}");
+                    assert_eq!(s, o3::dense(p3), "{p3:?}");
                     zero += (s == Sign::Zero) as u32;
                 }
                 None => declined += 1,

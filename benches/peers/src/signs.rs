@@ -102,63 +102,83 @@ pub mod naive {
     }
 }
 
-/// The `robust` crate's predicates, in exactray's conventions.
-pub mod robust {
-    use super::{minus_sign_of, sign_of};
-    use glam::{DVec2, DVec3};
+/// A module of calls of `robust`'s interface, from the crate `$krate`, in
+/// exactray's conventions: the `robust` crate itself and exactray's
+/// drop-in for it share them.
+macro_rules! robust_calls {
+    ($(#[$doc:meta])* $module:ident, $krate:ident) => {
+        $(#[$doc])*
+        pub mod $module {
+            use super::{minus_sign_of, sign_of};
+            use glam::{DVec2, DVec3};
 
-    /// A point for the `robust` crate.
-    #[inline]
-    pub fn coord(p: DVec2) -> ::robust::Coord<f64> {
-        ::robust::Coord { x: p.x, y: p.y }
-    }
+            /// A point for the `robust` crate.
+            #[inline]
+            pub fn coord(p: DVec2) -> ::$krate::Coord<f64> {
+                ::$krate::Coord { x: p.x, y: p.y }
+            }
 
-    /// A 3D point for the `robust` crate.
-    #[inline]
-    pub fn coord3(p: DVec3) -> ::robust::Coord3D<f64> {
-        ::robust::Coord3D {
-            x: p.x,
-            y: p.y,
-            z: p.z,
+            /// A 3D point for the `robust` crate.
+            #[inline]
+            pub fn coord3(p: DVec3) -> ::$krate::Coord3D<f64> {
+                ::$krate::Coord3D {
+                    x: p.x,
+                    y: p.y,
+                    z: p.z,
+                }
+            }
+
+            /// `robust::orient2d`.
+            #[inline]
+            pub fn orient2d(&[a, b, c]: &[DVec2; 3]) -> i8 {
+                sign_of(::$krate::orient2d(coord(a), coord(b), coord(c)))
+            }
+
+            /// `robust::orient3d`, negated (Shewchuk's convention is minus CGAL's).
+            #[inline]
+            pub fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i8 {
+                minus_sign_of(::$krate::orient3d(
+                    coord3(a),
+                    coord3(b),
+                    coord3(c),
+                    coord3(d),
+                ))
+            }
+
+            /// `robust::incircle`.
+            #[inline]
+            pub fn incircle(&[a, b, c, d]: &[DVec2; 4]) -> i8 {
+                sign_of(::$krate::incircle(coord(a), coord(b), coord(c), coord(d)))
+            }
+
+            /// `robust::insphere`, negated.
+            #[inline]
+            pub fn insphere(p: &[DVec3; 5]) -> i8 {
+                let [a, b, c, d, e] = p.map(coord3);
+                minus_sign_of(::$krate::insphere(a, b, c, d, e))
+            }
+
+            /// Two [`orient3d`] signs.
+            #[inline]
+            pub fn plane_side(c: &[DVec3; 5]) -> i8 {
+                super::plane_side_by(orient3d, c)
+            }
         }
-    }
-
-    /// `robust::orient2d`.
-    #[inline]
-    pub fn orient2d(&[a, b, c]: &[DVec2; 3]) -> i8 {
-        sign_of(::robust::orient2d(coord(a), coord(b), coord(c)))
-    }
-
-    /// `robust::orient3d`, negated (Shewchuk's convention is minus CGAL's).
-    #[inline]
-    pub fn orient3d(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i8 {
-        minus_sign_of(::robust::orient3d(
-            coord3(a),
-            coord3(b),
-            coord3(c),
-            coord3(d),
-        ))
-    }
-
-    /// `robust::incircle`.
-    #[inline]
-    pub fn incircle(&[a, b, c, d]: &[DVec2; 4]) -> i8 {
-        sign_of(::robust::incircle(coord(a), coord(b), coord(c), coord(d)))
-    }
-
-    /// `robust::insphere`, negated.
-    #[inline]
-    pub fn insphere(p: &[DVec3; 5]) -> i8 {
-        let [a, b, c, d, e] = p.map(coord3);
-        minus_sign_of(::robust::insphere(a, b, c, d, e))
-    }
-
-    /// Two [`orient3d`] signs.
-    #[inline]
-    pub fn plane_side(c: &[DVec3; 5]) -> i8 {
-        super::plane_side_by(orient3d, c)
-    }
+    };
 }
+
+robust_calls!(
+    /// The `robust` crate's predicates, in exactray's conventions.
+    robust,
+    robust
+);
+
+robust_calls!(
+    /// exactray's drop-in for `robust` (the workspace's `robust/`, exact
+    /// for every finite input), in exactray's conventions.
+    robust_drop_in,
+    robust_drop_in
+);
 
 /// The `arithmetica` crate's predicates (exact for every finite input, by
 /// its documentation), in exactray's conventions; its `Err` (a non-finite
@@ -409,6 +429,7 @@ mod tests {
             let want = exactray::predicates::orient2d(p[0], p[1], p[2]).as_i8();
             for f in [
                 super::robust::orient2d,
+                super::robust_drop_in::orient2d,
                 super::arithmetica::orient2d,
                 super::axiolid::orient2d,
                 super::apfp::orient2d,
@@ -426,6 +447,7 @@ mod tests {
             let want = exactray::predicates::orient3d(a, b, c, d).as_i8();
             for f in [
                 super::robust::orient3d,
+                super::robust_drop_in::orient3d,
                 super::arithmetica::orient3d,
                 super::axiolid::orient3d,
                 super::apfp::orient3d,
@@ -443,6 +465,7 @@ mod tests {
             let want = exactray::predicates::incircle(p[0], p[1], p[2], p[3]).as_i8();
             for f in [
                 super::robust::incircle,
+                super::robust_drop_in::incircle,
                 super::arithmetica::incircle,
                 super::axiolid::incircle,
                 super::apfp::incircle,
@@ -460,6 +483,7 @@ mod tests {
             let want = exactray::predicates::insphere(p[0], p[1], p[2], p[3], p[4]).as_i8();
             for f in [
                 super::robust::insphere,
+                super::robust_drop_in::insphere,
                 super::arithmetica::insphere,
                 super::axiolid::insphere,
                 super::apfp::insphere,
@@ -470,6 +494,7 @@ mod tests {
             let want = exactray::predicates::same_side(q[0], q[1], q[2], q[3], q[4]).as_i8();
             for f in [
                 super::robust::plane_side,
+                super::robust_drop_in::plane_side,
                 super::arithmetica::plane_side,
                 super::axiolid::plane_side,
                 super::apfp::plane_side,

@@ -26,13 +26,23 @@ pub fn exact_parts(v: f64) -> (BigInt, i32) {
 
 /// The values as integers at their common (smallest) exponent.
 pub fn common_integers(values: &[f64]) -> Vec<BigInt> {
+    common_integers_at(values).0
+}
+
+/// The values as integers at their common (smallest) exponent `e`, and
+/// `e`: value `i` is `integers[i] * 2^e`.
+pub fn common_integers_at(values: &[f64]) -> (Vec<BigInt>, i32) {
     let parts: Vec<_> = values.iter().map(|&v| exact_parts(v)).collect();
     let emin = parts.iter().map(|p| p.1).min().unwrap_or(0);
-    parts
+    let ints = parts
         .into_iter()
         .map(|(m, e)| m << ((e - emin) as usize))
-        .collect()
+        .collect();
+    (ints, emin)
 }
+
+/// A predicate's determinant exactly, as `(n, e)`: the value `n * 2^e`.
+pub type ExactValue = (BigInt, i32);
 
 fn sign(v: &BigInt) -> i8 {
     if v.is_zero() {
@@ -72,36 +82,63 @@ fn det4(m: &[[BigInt; 4]; 4]) -> BigInt {
 
 /// Sign of `(b - a) x (c - a)`.
 pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> i8 {
-    let v = common_integers(&[a[0], a[1], b[0], b[1], c[0], c[1]]);
+    sign(&orient2d_value(a, b, c).0)
+}
+
+/// `(b - a) x (c - a)` exactly (degree 2 in the common integers).
+pub fn orient2d_value(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> ExactValue {
+    let (v, e) = common_integers_at(&[a[0], a[1], b[0], b[1], c[0], c[1]]);
     let (bx, by) = (&v[2] - &v[0], &v[3] - &v[1]);
     let (cx, cy) = (&v[4] - &v[0], &v[5] - &v[1]);
-    sign(&det2(&bx, &by, &cx, &cy))
+    (det2(&bx, &by, &cx, &cy), 2 * e)
 }
 
 /// Sign of `det[b - a, c - a, d - a]` (CGAL's orientation).
 pub fn orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> i8 {
-    let v = common_integers(&[a, b, c, d].concat());
+    sign(&orient3d_value(a, b, c, d).0)
+}
+
+/// `det[b - a, c - a, d - a]` exactly (degree 3).
+pub fn orient3d_value(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> ExactValue {
+    let (v, e) = common_integers_at(&[a, b, c, d].concat());
     let row = |p: usize| -> [BigInt; 3] { core::array::from_fn(|k| &v[3 * p + k] - &v[k]) };
-    sign(&det3(&[row(1), row(2), row(3)]))
+    (det3(&[row(1), row(2), row(3)]), 3 * e)
 }
 
 /// Sign of `det[[a-d, |a-d|^2], [b-d, |b-d|^2], [c-d, |c-d|^2]]`: positive
 /// when `d` is inside the circle through counterclockwise `a, b, c`.
 pub fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> i8 {
-    let v = common_integers(&[a, b, c, d].concat());
+    sign(&incircle_value(a, b, c, d).0)
+}
+
+/// The in-circle determinant of [`incircle`] exactly (degree 4).
+pub fn incircle_value(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> ExactValue {
+    let (v, e) = common_integers_at(&[a, b, c, d].concat());
     let row = |p: usize| -> [BigInt; 3] {
         let x = &v[2 * p] - &v[6];
         let y = &v[2 * p + 1] - &v[7];
         let lift = &x * &x + &y * &y;
         [x, y, lift]
     };
-    sign(&det3(&[row(0), row(1), row(2)]))
+    (det3(&[row(0), row(1), row(2)]), 4 * e)
 }
 
 /// Sign of `-det[[a-e, |a-e|^2], ..., [d-e, |d-e|^2]]`: positive when `e` is
 /// inside the sphere through `a, b, c, d` with `orient3d(a, b, c, d) > 0`.
 pub fn insphere(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3], e: [f64; 3]) -> i8 {
-    let v = common_integers(&[a, b, c, d, e].concat());
+    sign(&insphere_value(a, b, c, d, e).0)
+}
+
+/// The in-sphere determinant of [`insphere`] exactly, with its sign
+/// (`-det[...]`, degree 5).
+pub fn insphere_value(
+    a: [f64; 3],
+    b: [f64; 3],
+    c: [f64; 3],
+    d: [f64; 3],
+    e: [f64; 3],
+) -> ExactValue {
+    let (v, exp) = common_integers_at(&[a, b, c, d, e].concat());
     let row = |p: usize| -> [BigInt; 4] {
         let x = &v[3 * p] - &v[12];
         let y = &v[3 * p + 1] - &v[13];
@@ -109,7 +146,7 @@ pub fn insphere(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3], e: [f64; 3])
         let lift = &x * &x + &y * &y + &z * &z;
         [x, y, z, lift]
     };
-    -sign(&det4(&[row(0), row(1), row(2), row(3)]))
+    (-det4(&[row(0), row(1), row(2), row(3)]), 5 * exp)
 }
 
 /// `sign(orient3d(x0, x1, x2, p)) * sign(orient3d(x0, x1, x2, q))`: `1` same

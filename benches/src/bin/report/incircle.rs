@@ -5,7 +5,7 @@ use crate::framework::method;
 use crate::signs::SignFamily;
 use exactray::testing::incircle_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, robust, sign_of};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, robust, robust_drop_in, sign_of};
 use glam::DVec2;
 
 type Case = [DVec2; 4];
@@ -21,6 +21,7 @@ pub fn family() -> SignFamily<Case> {
             }),
             method("naive", naive::incircle),
             method("robust", robust::incircle),
+            method("robust-drop-in", robust_drop_in::incircle),
             method("geometry-predicates", |p: &Case| {
                 sign_of(geometry_predicates::incircle(
                     p[0].into(),

@@ -6,7 +6,9 @@ use crate::framework::method;
 use crate::signs::SignFamily;
 use exactray::testing::insphere_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{apfp, arithmetica, axiolid, minus_sign_of, naive, robust};
+use exactray_peers::signs::{
+    apfp, arithmetica, axiolid, minus_sign_of, naive, robust, robust_drop_in,
+};
 use glam::DVec3;
 
 type Case = [DVec3; 5];
@@ -25,6 +27,7 @@ pub fn family() -> SignFamily<Case> {
             }),
             method("naive", naive::insphere),
             method("robust", robust::insphere),
+            method("robust-drop-in", robust_drop_in::insphere),
             method("geometry-predicates", |p: &Case| {
                 let [a, b, c, d, e] = p.map(<[f64; 3]>::from);
                 minus_sign_of(geometry_predicates::insphere(a, b, c, d, e))

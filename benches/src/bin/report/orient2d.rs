@@ -4,7 +4,7 @@ use crate::framework::method;
 use crate::signs::{SignFamily, batch};
 use exactray::testing::orient2d_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, robust, sign_of};
+use exactray_peers::signs::{apfp, arithmetica, axiolid, naive, robust, robust_drop_in, sign_of};
 use glam::DVec2;
 
 type Case = [DVec2; 3];
@@ -21,6 +21,7 @@ pub fn family() -> SignFamily<Case> {
             batch("exactray-batch", exactray::predicates::orient2d_many),
             method("naive", naive::orient2d),
             method("robust", robust::orient2d),
+            method("robust-drop-in", robust_drop_in::orient2d),
             method("geometry-predicates", |&[a, b, c]: &Case| {
                 sign_of(geometry_predicates::orient2d(a.into(), b.into(), c.into()))
             }),

@@ -5,7 +5,9 @@ use crate::framework::method;
 use crate::signs::{SignFamily, batch};
 use exactray::testing::orient3d_case;
 use exactray_oracle::oracle;
-use exactray_peers::signs::{apfp, arithmetica, axiolid, minus_sign_of, naive, robust};
+use exactray_peers::signs::{
+    apfp, arithmetica, axiolid, minus_sign_of, naive, robust, robust_drop_in,
+};
 use glam::DVec3;
 
 type Case = [DVec3; 4];
@@ -28,6 +30,9 @@ pub fn family() -> SignFamily<Case> {
             method("naive", |&[a, b, c, d]: &Case| naive::orient3d(a, b, c, d)),
             method("robust", |&[a, b, c, d]: &Case| {
                 robust::orient3d(a, b, c, d)
+            }),
+            method("robust-drop-in", |&[a, b, c, d]: &Case| {
+                robust_drop_in::orient3d(a, b, c, d)
             }),
             method("geometry-predicates", |&[a, b, c, d]: &Case| {
                 geometry_predicates(a, b, c, d)
