@@ -27,12 +27,14 @@
 //! of [`crate::bvh::boxes`].
 
 mod batch;
+mod closest;
 mod mesh;
 mod primitives;
 mod shading;
 mod spawn;
 
 pub use batch::BatchQueries;
+pub use closest::ClosestPoint;
 pub use mesh::{MAX_TRIANGLES, MeshHit, TraceStats, TriangleMesh};
 pub use primitives::{
     AnalyticShape, MAX_PRIMITIVES, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,
