@@ -12,14 +12,10 @@ use exactray_oracle::mesh_oracle::Frac;
 use glam::DVec3;
 use proptest::prelude::*;
 
-/// Whether the mesh keeps triangle `t` in its hierarchy (the query's rule).
-fn counts(mesh: &TriangleMesh, t: usize) -> bool {
-    mesh.triangle(t)
-        .is_some_and(|tri| !tri.is_degenerate() && tri.normal() != DVec3::ZERO)
-}
-
-fn oracle(mesh: &TriangleMesh, vertices: &[[f64; 3]], tris: &[[u32; 3]], p: [f64; 3]) -> Closest {
-    closest_triangles(p, vertices, tris, |t| counts(mesh, t))
+/// The oracle's answer over every triangle (degenerate ones count: the
+/// segments or points they are).
+fn oracle(vertices: &[[f64; 3]], tris: &[[u32; 3]], p: [f64; 3]) -> Closest {
+    closest_triangles(p, vertices, tris, |_| true)
 }
 
 /// `|exact - value| <= error`, exactly.
@@ -36,7 +32,7 @@ fn holds(exact: &Frac, value: f64, error: f64) -> bool {
 fn check(vertices: &[[f64; 3]], tris: &[[u32; 3]], p: [f64; 3]) -> Option<ClosestPoint> {
     let mesh = TriangleMesh::new(vertices, tris).unwrap();
     let got = mesh.closest_point(p).unwrap();
-    let want = oracle(&mesh, vertices, tris, p);
+    let want = oracle(vertices, tris, p);
     match (got, want.least) {
         (None, None) => {}
         (Some(c), Some(least)) => {
@@ -61,7 +57,7 @@ fn check(vertices: &[[f64; 3]], tris: &[[u32; 3]], p: [f64; 3]) -> Option<Closes
 fn check_within(vertices: &[[f64; 3]], tris: &[[u32; 3]], p: [f64; 3], max: f64) {
     let mesh = TriangleMesh::new(vertices, tris).unwrap();
     let got = mesh.closest_point_within(p, max).unwrap();
-    let want = oracle(&mesh, vertices, tris, p);
+    let want = oracle(vertices, tris, p);
     let m = dyadic(max);
     let inside = want.least.as_ref().is_some_and(|l| *l <= product(&m, &m));
     assert_eq!(got.is_some(), inside, "p {p:?}, max {max}");
@@ -269,11 +265,38 @@ fn errors_and_empty_meshes() {
             })
         );
     }
-    // Only a degenerate triangle: none in the hierarchy.
-    let flat = TriangleMesh::new(&vertices, &[[0, 1, 3]]).unwrap();
-    assert_eq!(flat.closest_point([0.0; 3]), Ok(None));
     let none = TriangleMesh::new(&vertices, &[]).unwrap();
     assert_eq!(none.closest_point([0.0; 3]), Ok(None));
+}
+
+/// Degenerate triangles (left out of the hierarchy) count as the segments
+/// and points they are, beside ordinary ones.
+#[test]
+fn degenerate_triangles_count() {
+    let vertices = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [2.0, 0.0, 0.0],
+        [5.0, 5.0, 5.0],
+    ];
+    // A segment from (0,0,0) to (2,0,0), a point, and a real triangle.
+    let tris = [[0, 1, 3], [4, 4, 4], [0, 1, 2]];
+    for k in [-1000, 0, 1000] {
+        let vs: Vec<[f64; 3]> = vertices.iter().map(|&v| place(v, k, 0.0)).collect();
+        for p in [
+            [1.5, -1.0, 0.0],
+            [5.0, 5.0, 6.0],
+            [0.25, 0.25, 1.0],
+            [0.5, 0.0, 0.0],
+        ] {
+            check(&vs, &tris, place(p, k, 0.0));
+        }
+        let c = check(&vs, &tris, place([1.5, -1.0, 0.0], k, 0.0)).unwrap();
+        assert_eq!(c.triangle, 0);
+        let c = check(&vs, &tris, place([5.0, 5.0, 6.0], k, 0.0)).unwrap();
+        assert_eq!(c.triangle, 1);
+    }
 }
 
 #[test]

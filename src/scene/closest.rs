@@ -4,8 +4,7 @@
 //!
 //! # What is exact and what is certified
 //! The triangles are closed sets (vertices, edges and face). The triangle
-//! returned is exactly the nearest one among the triangles of the mesh's
-//! hierarchy: no other has a smaller exact (real-number) distance to the
+//! returned is exactly the nearest one of the mesh: no other has a smaller exact (real-number) distance to the
 //! query, and among triangles at exactly the same distance it has the
 //! smallest index. Each candidate's squared distance is first enclosed in
 //! an interval of `f64` (`bounds.rs`: outward-rounded interval arithmetic
@@ -28,10 +27,14 @@
 //! border between two of a triangle's features.
 //!
 //! # Which triangles count
-//! The query follows the mesh's rule for its hierarchy: degenerate
-//! triangles (their vertices collinear, exactly) and triangles so thin
-//! that their rounded normal vanishes are left out, as for ray queries
-//! (see [`TriangleMesh`]). Every other triangle counts.
+//! Every triangle of the mesh, degenerate ones too (their vertices
+//! collinear or equal, exactly): such a triangle is the segment or point
+//! it spans, and has a distance. The hierarchy leaves them out, as it does
+//! triangles so thin that their rounded normal vanishes (see
+//! [`TriangleMesh`]); the query looks at each of those after its walk,
+//! and, as their intervals reach down to zero, orders each of them
+//! against the best so far exactly: a mesh with many of them makes every
+//! query slower by as many exact comparisons.
 //!
 //! # The walk
 //! The hierarchy is walked nearer boxes first (`bvh::boxes::point_walk`),
@@ -82,8 +85,7 @@ impl TriangleMesh {
     ///
     /// # Errors
     /// [`InputError::NonFinite`] (argument `"point"`) for a NaN or
-    /// infinite coordinate. `Ok(None)` when the mesh's hierarchy holds no
-    /// triangle (every triangle degenerate, or none).
+    /// infinite coordinate. `Ok(None)` when the mesh has no triangle.
     ///
     /// ```
     /// use exactray::scene::TriangleMesh;
@@ -179,8 +181,7 @@ impl TriangleMesh {
 
     /// The query for a finite `q` and a `max` at least zero.
     fn closest_in(&self, q: DVec3, max: f64) -> Option<ClosestPoint> {
-        let (lo, hi) = self.bvh.bounds()?;
-        let s = unit_scale(&[q.x, q.y, q.z, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z]);
+        let s = unit_scale(&[self.largest_magnitude(q)]);
         let max = (max < f64::INFINITY).then(|| (max, scaled_square(max, s)));
         let mut nearest = NearestTriangle {
             mesh: self,
@@ -192,11 +193,30 @@ impl TriangleMesh {
             reach: max.map_or(f64::INFINITY, |(_, m2)| m2.hi),
         };
         walk_point(&self.bvh, q, s, &mut nearest);
+        for &t in &self.left_out {
+            nearest.consider(t);
+        }
         let (triangle, found) = nearest.best?;
         Some(answer(triangle, &found, &self.corners(triangle), s))
     }
 
-    /// The vertices of triangle `index` (an index from the hierarchy).
+    /// The largest coordinate magnitude of `q`, the hierarchy's box and
+    /// the triangles left out of it: the query's scale brings it into
+    /// `[1/2, 1)`.
+    fn largest_magnitude(&self, q: DVec3) -> f64 {
+        let mut largest = q.abs().max_element();
+        if let Some((lo, hi)) = self.bvh.bounds() {
+            largest = largest.max(lo.abs().max(hi.abs()).max_element());
+        }
+        for &t in &self.left_out {
+            for v in self.corners(t) {
+                largest = largest.max(v.abs().max_element());
+            }
+        }
+        largest
+    }
+
+    /// The vertices of triangle `index` (an index of the mesh).
     #[inline(always)]
     fn corners(&self, index: u32) -> [DVec3; 3] {
         let vertices = self.vertices();

@@ -66,6 +66,9 @@ pub struct TriangleMesh {
     triangles: Vec<[u32; 3]>,
     normals: Option<Vec<DVec3>>,
     pub(super) bvh: BoxBvh,
+    /// The triangles left out of the hierarchy, ascending (for the
+    /// closest-point query, to which they still count).
+    pub(super) left_out: Vec<u32>,
 }
 
 /// The closest hit of a ray on a [`TriangleMesh`].
@@ -138,12 +141,15 @@ impl TriangleMesh {
             triangles: triangles.to_vec(),
             normals: None,
             bvh: BoxBvh::EMPTY,
+            left_out: Vec::new(),
         };
+        let mut left_out = Vec::new();
         let items: Vec<Item> = (0..mesh.triangles.len() as u32)
             .filter_map(|index| {
                 let tri = mesh.shape(index);
                 // Never hit: left out (see the module docs).
                 if tri.degenerate || tri.normal() == DVec3::ZERO {
+                    left_out.push(index);
                     return None;
                 }
                 let [a, b, c] = tri.v;
@@ -155,6 +161,7 @@ impl TriangleMesh {
             })
             .collect();
         mesh.bvh = BoxBvh::build(items, builder);
+        mesh.left_out = left_out;
         Ok(mesh)
     }
 
