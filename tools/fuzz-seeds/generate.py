@@ -22,6 +22,11 @@ little-endian, fields in order):
   bit patterns), a triangle-count byte (1 + b % 8), 3 index bytes per
   triangle, an edit byte and a pick byte, the origin and direction (as the
   vertices), two i8 for the in-plane edit.
+- mesh_closest: a mode byte (as ray_mesh's), an i16 `k` (scale `2^(k %
+  1001)`), the vertices (as ray_mesh's), a triangle-count byte (1 + b % 8),
+  3 index bytes per triangle, an edit byte (% 5: 0 the point halved, 1 at
+  a vertex, 2 at an edge's midpoint, 4 raw bit patterns) and a pick byte,
+  then the query point (as the vertices, or raw).
 - predicates: a selector byte (predicate = selector % 5, mode = selector / 5
   % 4: 2 takes a case from the library's hard generators, 3 the same with
   edits that may plant a NaN or an infinity), an input-class byte (% 6:
@@ -189,6 +194,37 @@ def mesh_cases(rng):
         yield out
 
 
+def closest_cases(rng):
+    # Small meshes with shared vertices on a lattice (raw bit patterns one
+    # time in ten) at scales 2^-1000..2^1000, degenerate triangles among
+    # them, and each of the target's query edits.
+    while True:
+        raw = rng.random() < 0.1
+        nv_sel = rng.randrange(6)
+        nv = 3 + nv_sel
+        mode = (7 if raw else rng.randrange(7)) + 8 * nv_sel
+        edit = rng.randrange(5)
+
+        def point(raw_point):
+            if raw_point:
+                return b"".join(struct.pack("<Q", bits(x)) for x in vec(rng))
+            return struct.pack("<3b", *[rng.randrange(-6, 7) for _ in range(3)])
+
+        out = bytes([mode]) + struct.pack("<h", rng.randrange(-1000, 1001))
+        for _ in range(nv):
+            out += point(raw)
+        nt = rng.randrange(8)
+        out += bytes([nt])
+        for j in range(nt + 1):
+            if rng.random() < 0.7:
+                out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
+            else:
+                out += bytes(rng.randrange(nv) for _ in range(3))
+        out += bytes([edit, rng.randrange(256)])
+        out += point(raw or edit == 4)
+        yield out
+
+
 def corpus(name, cases, seed):
     rng = random.Random(seed)
     out = {}
@@ -206,7 +242,8 @@ def main() -> int:
                         corpus("roots", roots_cases, 14),
                         corpus("predicates", predicate_cases, 15),
                         corpus("ray_mesh", mesh_cases, 16),
-                        corpus("implicit", implicit_cases, 17)]:
+                        corpus("implicit", implicit_cases, 17),
+                        corpus("mesh_closest", closest_cases, 18)]:
         folder = ROOT / name
         have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
         if check:
