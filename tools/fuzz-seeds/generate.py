@@ -163,6 +163,23 @@ def implicit_cases(rng):
         yield out
 
 
+def mesh_body(rng, nv, point):
+    """The vertices (`point()` each) and the triangles of a small mesh: a
+    triangle-count byte, then three index bytes per triangle, fans around
+    vertex 0 (shared edges) or random index triples."""
+    out = b""
+    for _ in range(nv):
+        out += point()
+    nt = rng.randrange(8)
+    out += bytes([nt])
+    for j in range(nt + 1):
+        if rng.random() < 0.7:
+            out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
+        else:
+            out += bytes(rng.randrange(nv) for _ in range(3))
+    return out
+
+
 def mesh_cases(rng):
     # Small meshes: fans around vertex 0 (shared edges) or random index
     # triples, lattice coordinates (raw bit patterns one time in ten), and
@@ -179,15 +196,7 @@ def mesh_cases(rng):
             return struct.pack("<3b", *[rng.randrange(-20, 21) for _ in range(3)])
 
         out = bytes([mode]) + struct.pack("<b", rng.randrange(-8, 9))
-        for _ in range(nv):
-            out += point()
-        nt = rng.randrange(8)
-        out += bytes([nt])
-        for j in range(nt + 1):
-            if rng.random() < 0.7:
-                out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
-            else:
-                out += bytes(rng.randrange(nv) for _ in range(3))
+        out += mesh_body(rng, nv, point)
         out += bytes([rng.randrange(6), rng.randrange(256)])
         out += point() + point()
         out += struct.pack("<2b", rng.randrange(-12, 13), rng.randrange(-12, 13))
@@ -211,15 +220,7 @@ def closest_cases(rng):
             return struct.pack("<3b", *[rng.randrange(-6, 7) for _ in range(3)])
 
         out = bytes([mode]) + struct.pack("<h", rng.randrange(-1000, 1001))
-        for _ in range(nv):
-            out += point(raw)
-        nt = rng.randrange(8)
-        out += bytes([nt])
-        for j in range(nt + 1):
-            if rng.random() < 0.7:
-                out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
-            else:
-                out += bytes(rng.randrange(nv) for _ in range(3))
+        out += mesh_body(rng, nv, lambda: point(raw))
         out += bytes([edit, rng.randrange(256)])
         out += point(raw or edit == 4)
         yield out
