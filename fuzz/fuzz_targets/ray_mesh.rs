@@ -20,45 +20,25 @@ use exactray::interval::Interval;
 use exactray::query::ray::{EXACT_T_ULPS, Exact, Ray};
 use exactray::scene::TriangleMesh;
 use exactray::testing::finite_f64_from_bits;
+use exactray_fuzz::{LatticeMesh, lattice};
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
 use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
 
-fn lattice(u: &mut Unstructured, raw: bool, scale: f64) -> arbitrary::Result<DVec3> {
-    if raw {
-        let b = <[u64; 3]>::arbitrary(u)?;
-        return Ok(DVec3::from_array(b.map(finite_f64_from_bits)));
-    }
-    let c = <[i8; 3]>::arbitrary(u)?;
-    Ok(DVec3::from_array(c.map(|x| f64::from(x) * 2.0 * scale)))
-}
-
 fuzz_target!(|data: &[u8]| {
     let mut u = Unstructured::new(data);
-    let Ok(mode) = u8::arbitrary(&mut u) else {
+    let Some(LatticeMesh {
+        raw,
+        k,
+        scale,
+        mut vertices,
+        triangles,
+    }) = LatticeMesh::decode(&mut u)
+    else {
         return;
     };
-    let raw = mode % 8 == 7;
-    // 2^k for k in -1000..=1000, in two exact steps.
-    let k = i32::from(i16::arbitrary(&mut u).unwrap_or(0)) % 1001;
-    let scale = 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
-    let nv = 3 + usize::from(mode / 8 % 6);
-    let mut vertices = Vec::with_capacity(nv);
-    for _ in 0..nv {
-        let Ok(v) = lattice(&mut u, raw, scale) else {
-            return;
-        };
-        vertices.push(v);
-    }
-    let nt = 1 + usize::from(u8::arbitrary(&mut u).unwrap_or(0) % 8);
-    let mut triangles = Vec::with_capacity(nt);
-    for _ in 0..nt {
-        let Ok(t) = <[u8; 3]>::arbitrary(&mut u) else {
-            return;
-        };
-        triangles.push(t.map(|i| u32::from(i) % nv as u32));
-    }
+    let (nv, nt) = (vertices.len(), triangles.len());
     let (Ok(edit), Ok(pick)) = (u8::arbitrary(&mut u), u8::arbitrary(&mut u)) else {
         return;
     };
