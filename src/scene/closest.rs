@@ -49,7 +49,7 @@ mod exact;
 use super::TriangleMesh;
 use super::batch::each_into;
 use crate::arith::exponent::{scale_pow2, unit_scale};
-use crate::bvh::boxes::{PointVisitor, walk_point};
+use crate::bvh::boxes::{PointVisitor, box_distance_below, walk_point};
 use crate::error::InputError;
 use crate::point::IntoDVec3;
 use crate::sign::Sign;
@@ -196,8 +196,11 @@ impl TriangleMesh {
         for &t in &self.left_out {
             nearest.consider(t);
         }
-        let (triangle, found) = nearest.best?;
-        Some(answer(triangle, &found, &self.corners(triangle), s))
+        let (triangle, _) = nearest.best?;
+        let corners = self.corners(triangle);
+        let scaled = corners.map(|v| scaled_point(v, s));
+        let found = triangle_bounds::<true>(&nearest.scaled, &scaled);
+        Some(answer(triangle, &found, &corners, s))
     }
 
     /// The largest coordinate magnitude of `q`, the hierarchy's box and
@@ -266,8 +269,18 @@ impl NearestTriangle<'_> {
     /// nearer, or exactly as near with a smaller index.
     fn consider(&mut self, t: u32) {
         let corners = self.mesh.corners(t);
+        // The triangle's own box first: most triangles of a leaf that is
+        // in reach lie beyond the best (a tie lies within its box's bound,
+        // at most the best's exact distance, at most `reach`).
+        let (lo, hi) = (
+            corners[0].min(corners[1]).min(corners[2]),
+            corners[0].max(corners[1]).max(corners[2]),
+        );
+        if box_distance_below(lo, hi, self.q, self.s) > self.reach {
+            return;
+        }
         let scaled = corners.map(|v| scaled_point(v, self.s));
-        let found = triangle_bounds(&self.scaled, &scaled);
+        let found = triangle_bounds::<false>(&self.scaled, &scaled);
         if found.d2.lo > self.reach {
             return;
         }
@@ -282,6 +295,8 @@ impl NearestTriangle<'_> {
                 true
             } else if found.d2.lo > best.d2.hi {
                 false
+            } else if same_feature((&corners, found.sole), (&self.mesh.corners(*j), best.sole)) {
+                t < *j
             } else {
                 match exact::compare(self.q, &corners, &self.mesh.corners(*j)) {
                     Sign::Negative => true,
@@ -297,6 +312,32 @@ impl NearestTriangle<'_> {
         self.reach = self
             .max
             .map_or(found.d2.hi, |(_, m2)| found.d2.hi.min(m2.hi));
+    }
+}
+
+/// The ends of candidate `c` of a triangle with corners `v` (see
+/// `TriangleBounds::sole`): a vertex twice, an edge's two vertices, `None`
+/// for the plane.
+fn feature_ends(v: &[DVec3; 3], c: u8) -> Option<(DVec3, DVec3)> {
+    match c {
+        0..=2 => Some((v[c as usize], v[c as usize])),
+        3 => Some((v[0], v[1])),
+        4 => Some((v[1], v[2])),
+        5 => Some((v[2], v[0])),
+        _ => None,
+    }
+}
+
+/// Whether two triangles' sole possible least candidates are the same
+/// vertex, or the same edge (the same two points, in either order): their
+/// exact squared distances are then both that feature's, exactly equal.
+/// A cheap exact tie for the common case of a query nearest to an edge
+/// or a vertex that neighbouring triangles share.
+fn same_feature(s: (&[DVec3; 3], Option<u8>), t: (&[DVec3; 3], Option<u8>)) -> bool {
+    let ends = |(v, c): (&[DVec3; 3], Option<u8>)| c.and_then(|c| feature_ends(v, c));
+    match (ends(s), ends(t)) {
+        (Some((a, b)), Some((c, d))) => (a == c && b == d) || (a == d && b == c),
+        _ => false,
     }
 }
 

@@ -28,7 +28,7 @@ mod wide;
 pub(crate) use build::Item;
 #[cfg(feature = "ploc")]
 pub use ploc::PlocQuality;
-pub(crate) use point_walk::{PointVisitor, walk_point};
+pub(crate) use point_walk::{PointVisitor, box_distance_below, walk_point};
 pub(crate) use traverse::{Visitor, walk, walk_halved_segment};
 #[cfg(test)]
 pub(crate) use wide::WIDTH;

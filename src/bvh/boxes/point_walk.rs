@@ -63,30 +63,40 @@ fn scaled_square_below(gap: f64, s: i32) -> f64 {
     (g * g).next_down().max(0.0)
 }
 
+/// A lower bound of the squared distance, scaled by `2^(2s)`, from `q` to
+/// the box `[lo, hi]` (exact bounds, `lo <= hi`), rounded down as the
+/// lanes' (see the module docs).
+#[inline(always)]
+pub(crate) fn box_distance_below(lo: DVec3, hi: DVec3, q: DVec3, s: i32) -> f64 {
+    let mut sum = 0.0f64;
+    for k in 0..3 {
+        let gap = if q[k] < lo[k] {
+            lo[k] - q[k]
+        } else if q[k] > hi[k] {
+            q[k] - hi[k]
+        } else {
+            0.0
+        };
+        sum = (sum + scaled_square_below(gap, s)).next_down().max(0.0);
+    }
+    sum
+}
+
 /// The lower bound of the squared distance, scaled by `2^(2s)`, from `q`
 /// to each lane's box of `node` (see the module docs).
 #[inline]
 fn lane_bounds(node: &super::WideNode, frame: &Frame, q: DVec3, s: i32) -> [f64; WIDTH] {
     core::array::from_fn(|l| {
-        let mut sum = 0.0f64;
-        for k in 0..3 {
-            let lo = frame.world_down(node.min[k][l], k);
-            let hi = frame.world_up(node.max[k][l], k);
-            if lo > hi || lo.is_nan() || hi.is_nan() {
-                // An empty lane (stepping its infinite gap down would
-                // make it finite).
-                return f64::INFINITY;
-            }
-            let gap = if q[k] < lo {
-                lo - q[k]
-            } else if q[k] > hi {
-                q[k] - hi
-            } else {
-                0.0
-            };
-            sum = (sum + scaled_square_below(gap, s)).next_down().max(0.0);
+        let lo = DVec3::from_array(core::array::from_fn(|k| {
+            frame.world_down(node.min[k][l], k)
+        }));
+        let hi = DVec3::from_array(core::array::from_fn(|k| frame.world_up(node.max[k][l], k)));
+        if !lo.cmple(hi).all() {
+            // An empty lane (stepping its infinite gap down would make it
+            // finite).
+            return f64::INFINITY;
         }
-        sum
+        box_distance_below(lo, hi, q, s)
     })
 }
 

@@ -198,7 +198,7 @@ impl Holds {
 
 #[inline(always)]
 pub(super) fn vsub(a: &Vec3Bounds, b: &Vec3Bounds) -> Vec3Bounds {
-    core::array::from_fn(|k| a[k].sub(b[k]))
+    [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])]
 }
 
 #[inline(always)]
@@ -213,10 +213,12 @@ fn norm2(a: &Vec3Bounds) -> Bounds {
 
 #[inline(always)]
 pub(super) fn cross(a: &Vec3Bounds, b: &Vec3Bounds) -> Vec3Bounds {
-    core::array::from_fn(|k| {
-        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        a[i].mul(b[j]).sub(a[j].mul(b[i]))
-    })
+    // Written out rather than built by index: the hot loop of a query.
+    [
+        a[1].mul(b[2]).sub(a[2].mul(b[1])),
+        a[2].mul(b[0]).sub(a[0].mul(b[2])),
+        a[0].mul(b[1]).sub(a[1].mul(b[0])),
+    ]
 }
 
 /// One of the seven candidates: its condition, its squared distance and
@@ -234,6 +236,13 @@ struct Candidate {
 pub(super) struct TriangleBounds {
     pub(super) d2: Bounds,
     pub(super) point: Vec3Bounds,
+    /// The candidate that alone may be the least (`0..3` a vertex, `3..6`
+    /// the edges `v0 v1`, `v1 v2`, `v2 v0`, `6` the plane), or `None`
+    /// when several may be. The exact least one is among those not
+    /// certainly false whose lower end is at most `d2.hi` (its exact value
+    /// is at most `d2.hi`); when that is one candidate, the triangle's
+    /// exact squared distance is that candidate's exact value.
+    pub(super) sole: Option<u8>,
 }
 
 /// The candidate of vertex `v`.
@@ -248,7 +257,7 @@ fn vertex(p: &Vec3Bounds, v: &Vec3Bounds) -> Candidate {
 
 /// The candidate of the edge from `a` to `b`'s line.
 #[inline(always)]
-fn edge(p: &Vec3Bounds, a: &Vec3Bounds, b: &Vec3Bounds) -> Candidate {
+fn edge<const POINT: bool>(p: &Vec3Bounds, a: &Vec3Bounds, b: &Vec3Bounds) -> Candidate {
     let e = vsub(b, a);
     let (pa, pb) = (vsub(p, a), vsub(p, b));
     let len2 = norm2(&e);
@@ -257,17 +266,22 @@ fn edge(p: &Vec3Bounds, a: &Vec3Bounds, b: &Vec3Bounds) -> Candidate {
     let holds = Holds::of(from_a, false)
         .and(Holds::of(from_b, false))
         .and(Holds::of(len2, true));
-    let t = from_a.div(len2);
+    let point = if POINT {
+        let t = from_a.div(len2);
+        [0, 1, 2].map(|k| a[k].add(e[k].mul(t)))
+    } else {
+        [Bounds::ZERO; 3]
+    };
     Candidate {
         holds,
         d2: norm2(&cross(&pa, &e)).ratio(len2),
-        point: core::array::from_fn(|k| a[k].add(e[k].mul(t))),
+        point,
     }
 }
 
 /// The candidate of the triangle's plane.
 #[inline(always)]
-fn face(p: &Vec3Bounds, v: &[Vec3Bounds; 3]) -> Candidate {
+fn face<const POINT: bool>(p: &Vec3Bounds, v: &[Vec3Bounds; 3]) -> Candidate {
     let n = cross(&vsub(&v[1], &v[0]), &vsub(&v[2], &v[0]));
     let nn = norm2(&n);
     let mut holds = Holds::of(nn, true);
@@ -277,26 +291,35 @@ fn face(p: &Vec3Bounds, v: &[Vec3Bounds; 3]) -> Candidate {
         holds = holds.and(Holds::of(side, false));
     }
     let height = dot(&vsub(p, &v[0]), &n);
-    let along = height.div(nn);
+    let point = if POINT {
+        let along = height.div(nn);
+        [0, 1, 2].map(|k| p[k].sub(n[k].mul(along)))
+    } else {
+        [Bounds::ZERO; 3]
+    };
     Candidate {
         holds,
         d2: height.square().ratio(nn),
-        point: core::array::from_fn(|k| p[k].sub(n[k].mul(along))),
+        point,
     }
 }
 
 /// The enclosures of the squared distance from `p` to the closed triangle
-/// `v` and of its closest point (every point whose candidate may be the
-/// least one).
-pub(super) fn triangle_bounds(p: &Vec3Bounds, v: &[Vec3Bounds; 3]) -> TriangleBounds {
+/// `v` and, with `POINT`, of its closest point (every point whose
+/// candidate may be the least one; zero without `POINT`, which a query
+/// wants of its answer only).
+pub(super) fn triangle_bounds<const POINT: bool>(
+    p: &Vec3Bounds,
+    v: &[Vec3Bounds; 3],
+) -> TriangleBounds {
     let candidates = [
         vertex(p, &v[0]),
         vertex(p, &v[1]),
         vertex(p, &v[2]),
-        edge(p, &v[0], &v[1]),
-        edge(p, &v[1], &v[2]),
-        edge(p, &v[2], &v[0]),
-        face(p, v),
+        edge::<POINT>(p, &v[0], &v[1]),
+        edge::<POINT>(p, &v[1], &v[2]),
+        edge::<POINT>(p, &v[2], &v[0]),
+        face::<POINT>(p, v),
     ];
     let mut d2 = Bounds {
         lo: f64::INFINITY,
@@ -311,12 +334,13 @@ pub(super) fn triangle_bounds(p: &Vec3Bounds, v: &[Vec3Bounds; 3]) -> TriangleBo
         }
     }
     let mut point: Option<Vec3Bounds> = None;
-    for c in &candidates {
+    let mut sole = None;
+    for (i, c) in candidates.iter().enumerate() {
         if c.holds != Holds::Never && c.d2.lo <= d2.hi {
-            point = Some(match point {
-                None => c.point,
-                Some(q) => core::array::from_fn(|k| q[k].hull(c.point[k])),
-            });
+            (point, sole) = match point {
+                None => (Some(c.point), Some(i as u8)),
+                Some(q) => (Some([0, 1, 2].map(|k| q[k].hull(c.point[k]))), None),
+            };
         }
     }
     TriangleBounds {
@@ -324,11 +348,12 @@ pub(super) fn triangle_bounds(p: &Vec3Bounds, v: &[Vec3Bounds; 3]) -> TriangleBo
         // The candidate whose upper end is `d2.hi` holds surely (a vertex
         // always does) and its lower end is at most `d2.hi`: never empty.
         point: point.unwrap_or([Bounds::ZERO; 3]),
+        sole,
     }
 }
 
 /// The world coordinates of `v` scaled by `2^s`, enclosed.
 #[inline(always)]
 pub(super) fn scaled_point(v: DVec3, s: i32) -> Vec3Bounds {
-    core::array::from_fn(|k| Bounds::scaled(v[k], s))
+    [0, 1, 2].map(|k| Bounds::scaled(v[k], s))
 }
