@@ -116,6 +116,22 @@ proptest! {
         check(&vs, &mesh.1, p);
     }
 
+    /// Triangles sharing vertices and edges (indices into a few lattice
+    /// vertices): queries nearest to a shared edge or vertex are exact
+    /// ties between neighbours.
+    #[test]
+    fn shared_edges_and_vertices(
+        vertices in prop::collection::vec(prop::array::uniform3(-3i32..=3), 4..7),
+        picks in prop::collection::vec(prop::array::uniform3(0usize..7), 1..9),
+        p in prop::array::uniform3(-8i32..=8),
+        k in -1000i32..1000,
+    ) {
+        let n = vertices.len();
+        let tris: Vec<[u32; 3]> = picks.iter().map(|t| t.map(|i| (i % n) as u32)).collect();
+        let vs: Vec<[f64; 3]> = vertices.iter().map(|v| place(v.map(f64::from), k, 0.0)).collect();
+        check(&vs, &tris, place(p.map(|x| f64::from(x) / 2.0), k, 0.0));
+    }
+
     /// Points a few units of rounding off vertices and edge midpoints.
     #[test]
     fn near_vertices_and_edges(
