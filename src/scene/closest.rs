@@ -4,15 +4,19 @@
 //!
 //! # What is exact and what is certified
 //! The triangles are closed sets (vertices, edges and face). The triangle
-//! returned is exactly the nearest one of the mesh: no other has a smaller exact (real-number) distance to the
-//! query, and among triangles at exactly the same distance it has the
-//! smallest index. Each candidate's squared distance is first enclosed in
-//! an interval of `f64` (`bounds.rs`: outward-rounded interval arithmetic
-//! on the coordinates scaled by a power of two that brings the largest
-//! magnitude of the query and the mesh's box into `[1/2, 1)`, so that
-//! nothing overflows at any finite scale); two candidates whose intervals
-//! overlap are ordered exactly, as fractions of integers in fixed-size
-//! stack integers (`exact.rs`). A distance bound
+//! returned is exactly the nearest one of the mesh: no other has a
+//! smaller exact (real-number) distance to the query, and among triangles
+//! at exactly the same distance it has the smallest index. Each
+//! candidate's squared distance is first enclosed in an interval of `f64`
+//! (`bounds.rs`: outward-rounded interval arithmetic on the coordinates
+//! scaled by a power of two that brings the largest magnitude of the
+//! query and the mesh into `[1/2, 1)`, so that nothing overflows at any
+//! finite scale). Two candidates whose intervals overlap are ordered
+//! exactly: as a tie when each one's distance is certainly that of the
+//! same vertex or edge (neighbours sharing the feature nearest to the
+//! query, the common case, see `same_feature`), otherwise as fractions
+//! of integers in fixed-size stack integers (`exact.rs`, the slow path:
+//! tens of microseconds). A distance bound
 //! ([`TriangleMesh::closest_point_within`]) is applied exactly too.
 //!
 //! The point and the squared distance returned are certified, not exact:
