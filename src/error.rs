@@ -71,6 +71,11 @@ pub enum InputError {
         /// The length of the slice it indexes.
         len: usize,
     },
+    /// A query that needs a closed, consistently oriented mesh was asked
+    /// of a mesh that is not one: some edge is not shared by exactly two
+    /// triangles that run along it in opposite directions
+    /// (`TriangleMesh::is_closed`, with `alloc`).
+    OpenMesh,
 }
 
 impl InputError {
@@ -116,6 +121,10 @@ impl fmt::Display for InputError {
             InputError::IndexOutOfRange { index, len } => {
                 write!(f, "index {index} out of range for length {len}")
             }
+            InputError::OpenMesh => write!(
+                f,
+                "the mesh is not closed: some edge is not shared by two opposite triangles"
+            ),
         }
     }
 }

@@ -27,7 +27,7 @@ use exactray::bvh::SphereBvh;
 use exactray::interval::Interval;
 use exactray::query::ray::{Exact, Ray};
 use exactray::roots::Roots;
-use exactray::scene::TriangleMesh;
+use exactray::scene::{MeshSide, TriangleMesh};
 use exactray::shape::{Cone, Cylinder, Quadric, Sphere, Triangle};
 use exactray_oracle::implicit_oracle::{self, Pt2, Pt3};
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
@@ -104,10 +104,13 @@ enum Scaling {
     Tagged(&'static [Tag]),
 }
 
-/// A line tag of a [`Scaling::Tagged`] kind.
+/// A line tag of a [`Scaling::Tagged`] kind: `count` coordinates after
+/// the tag, scaled by `2^k`, then `squared` fields scaled by `2^2k`
+/// (squared distances).
 struct Tag {
     tag: &'static str,
     count: usize,
+    squared: usize,
     set: bool,
 }
 
@@ -122,9 +125,15 @@ impl Scaling {
                 12..15 => -1,
                 _ => 0,
             },
-            Scaling::Tagged(_) => self
-                .tag(fields)
-                .map_or(0, |t| i32::from((1..=t.count).contains(&i))),
+            Scaling::Tagged(_) => self.tag(fields).map_or(0, |t| {
+                if (1..=t.count).contains(&i) {
+                    1
+                } else if (t.count + 1..=t.count + t.squared).contains(&i) {
+                    2
+                } else {
+                    0
+                }
+            }),
         }
     }
 
@@ -157,11 +166,46 @@ const NEAREST_TAGS: &[Tag] = &[
     Tag {
         tag: "p",
         count: 3,
+        squared: 0,
         set: true,
     },
     Tag {
         tag: "q",
         count: 3,
+        squared: 0,
+        set: false,
+    },
+];
+
+/// `mesh_side`: `v x y z` (the set), `f i j k`, `p x y z side`.
+const MESH_SIDE_TAGS: &[Tag] = &[
+    Tag {
+        tag: "v",
+        count: 3,
+        squared: 0,
+        set: true,
+    },
+    Tag {
+        tag: "p",
+        count: 3,
+        squared: 0,
+        set: false,
+    },
+];
+
+/// `mesh_closest`: `v x y z` (the set), `f i j k`, `p x y z d2 tri ...`
+/// (`d2` a squared distance).
+const MESH_CLOSEST_TAGS: &[Tag] = &[
+    Tag {
+        tag: "v",
+        count: 3,
+        squared: 0,
+        set: true,
+    },
+    Tag {
+        tag: "p",
+        count: 3,
+        squared: 1,
         set: false,
     },
 ];
@@ -172,16 +216,19 @@ const RAY_MESH_TAGS: &[Tag] = &[
     Tag {
         tag: "v",
         count: 3,
+        squared: 0,
         set: true,
     },
     Tag {
         tag: "r",
         count: 6,
+        squared: 0,
         set: false,
     },
     Tag {
         tag: "s",
         count: 6,
+        squared: 0,
         set: false,
     },
 ];
@@ -298,6 +345,20 @@ const KINDS: &[Kind] = &[
         predicate: Some(WholeFile(crate_ray_mesh)),
         oracle: Some(WholeFile(oracle_ray_mesh)),
         scaling: Scaling::Tagged(RAY_MESH_TAGS),
+    },
+    Kind {
+        name: "mesh_side",
+        min_fields: 4,
+        predicate: Some(WholeFile(crate_mesh_side)),
+        oracle: Some(WholeFile(oracle_mesh_side)),
+        scaling: Scaling::Tagged(MESH_SIDE_TAGS),
+    },
+    Kind {
+        name: "mesh_closest",
+        min_fields: 4,
+        predicate: None,
+        oracle: None,
+        scaling: Scaling::Tagged(MESH_CLOSEST_TAGS),
     },
 ];
 
@@ -926,6 +987,16 @@ enum MeshQuery {
         q: [f64; 3],
         blocked: bool,
     },
+    /// `p x y z side` (`mesh_side`): `1` inside, `0` on the boundary, `-1`
+    /// outside.
+    Side { p: [f64; 3], side: i8 },
+    /// `p x y z d2 tri ...` (`mesh_closest`): the least squared distance,
+    /// rounded, and every triangle at exactly it, strictly ascending.
+    Closest {
+        p: [f64; 3],
+        d2: f64,
+        tris: Vec<usize>,
+    },
 }
 
 /// A `ray_mesh` file: `v x y z` vertices and `f i j k` triangles (each
@@ -955,6 +1026,19 @@ fn parse_flag(field: &str, what: &str) -> Result<bool, String> {
         "1" => Ok(true),
         _ => Err(format!("bad {what} {field:?} (want 0 or 1)")),
     }
+}
+
+/// Triangle indices, strictly ascending.
+fn ascending_indices(fields: &[&str]) -> Result<Vec<usize>, String> {
+    let mut tris: Vec<usize> = Vec::with_capacity(fields.len());
+    for field in fields {
+        let index = parse_index(field)?;
+        if tris.last().is_some_and(|&last| last >= index) {
+            return Err("triangles must be strictly ascending".to_string());
+        }
+        tris.push(index);
+    }
+    Ok(tris)
 }
 
 fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), String> {
@@ -993,15 +1077,7 @@ fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), Stri
                     return Err("a hit needs t and at least one triangle".to_string());
                 }
                 let t = parse_f64(f[8])?;
-                let mut tris: Vec<usize> = Vec::with_capacity(f.len() - 9);
-                for field in &f[9..] {
-                    let index = parse_index(field)?;
-                    if tris.last().is_some_and(|&last| last >= index) {
-                        return Err("triangles must be strictly ascending".to_string());
-                    }
-                    tris.push(index);
-                }
-                Some((t, tris))
+                Some((t, ascending_indices(&f[9..])?))
             } else {
                 count(8, "miss (hit 0) r")?;
                 None
@@ -1014,7 +1090,28 @@ fn parse_mesh_line(f: &[&str], file: &mut MeshFile, i: usize) -> Result<(), Stri
             let blocked = parse_flag(f[7], "blocked")?;
             file.queries.push((i, MeshQuery::Segment { p, q, blocked }));
         }
-        tag => return Err(format!("expected a v, f, r or s line, found {tag:?}")),
+        "p" if f.len() == 5 => {
+            let side = match f[4] {
+                "1" => 1,
+                "0" => 0,
+                "-1" => -1,
+                other => return Err(format!("side must be 1, 0 or -1, found {other:?}")),
+            };
+            let p = parse_point3(&f[1..4])?;
+            file.queries.push((i, MeshQuery::Side { p, side }));
+        }
+        "p" => {
+            if f.len() < 6 {
+                return Err(format!(
+                    "a p line has 5 or at least 6 fields, found {}",
+                    f.len()
+                ));
+            }
+            let (p, d2) = (parse_point3(&f[1..4])?, parse_f64(f[4])?);
+            let tris = ascending_indices(&f[5..])?;
+            file.queries.push((i, MeshQuery::Closest { p, d2, tris }));
+        }
+        tag => return Err(format!("expected a v, f, r, s or p line, found {tag:?}")),
     }
     Ok(())
 }
@@ -1040,10 +1137,15 @@ fn parse_ray_mesh(lines: &[Vec<&str>]) -> Result<MeshFile, (usize, String)> {
     }
     let n = file.triangles.len();
     for (at, q) in &file.queries {
-        if let MeshQuery::Ray {
-            want: Some((_, tris)),
-            ..
-        } = q
+        let listed = match q {
+            MeshQuery::Ray {
+                want: Some((_, tris)),
+                ..
+            }
+            | MeshQuery::Closest { tris, .. } => Some(tris),
+            _ => None,
+        };
+        if let Some(tris) = listed
             && let Some(bad) = tris.iter().find(|&&k| k >= n)
         {
             return Err((
@@ -1122,14 +1224,16 @@ fn crate_mesh_setup(file: &MeshFile) -> Result<CrateMesh, String> {
 /// triangles listed) in a closed part of the mesh (every edge of every
 /// listed triangle shared by exactly two triangles: a closed fan around
 /// the point) and the ray crosses the surface there (every listed triangle
-/// faces the ray on the same side, exactly: the fan's projection along the
-/// ray covers the point, where its guarantee holds). A ray lying in the
+/// faces the ray on the same side, exactly, once the fan is taken in one
+/// orientation: the fan's projection along the ray covers the point, where
+/// its guarantee holds; [`oriented_alike`]). A ray lying in the
 /// plane of a listed triangle, and a ray touching a silhouette edge or
 /// vertex (the fan folds: its triangles face the ray on different sides,
 /// and the shared edge's one rounded sign puts the ray outside all of
 /// them or inside), it may call a miss (documented in `scene`).
 ///
-/// `s`: `occluded_between_with::<Exact>` must equal `blocked`.
+/// `s`: `occluded_between_with::<Exact>` must equal `blocked`, and the
+/// watertight `occluded_between` must answer.
 fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result<Verdict, String> {
     match q {
         MeshQuery::Ray { o, d, want } => {
@@ -1163,7 +1267,9 @@ fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result
                     })
                     .collect();
                 let in_plane = lines.iter().any(|l| l.coplanar);
-                let crosses = lines.iter().all(|l| l.front == lines[0].front);
+                let fronts: Vec<bool> = lines.iter().map(|l| l.front).collect();
+                let crosses = oriented_alike(&file.triangles, tris, &fronts)
+                    .is_some_and(|f| f.iter().all(|&x| x == f[0]));
                 if !in_plane && crosses && m.mesh.closest_hit(&ray, Interval::FORWARD).is_none() {
                     return Ok(Verdict::Mismatch {
                         expected: format!("a watertight hit at the shared point of {tris:?}"),
@@ -1178,13 +1284,109 @@ fn crate_ray_mesh_query(file: &MeshFile, m: &CrateMesh, q: &MeshQuery) -> Result
                 .mesh
                 .occluded_between_with::<Exact>(*p, *q)
                 .map_err(|e| e.to_string())?;
+            // The watertight segment answers every finite pair too.
+            m.mesh.occluded_between(*p, *q).map_err(|e| e.to_string())?;
             Ok(verdict(
                 got == *blocked,
                 format!("blocked {blocked}"),
                 format!("blocked {got}"),
             ))
         }
+        other => Err(not_this_kind(other)),
     }
+}
+
+/// The side each listed triangle faces the ray on (`fronts`, by each
+/// triangle's own vertex order), taken in one orientation of the fan:
+/// a triangle that runs an edge it shares with another in the same
+/// direction is oriented against it, so its side is flipped. Then the
+/// ray crosses the fan (its triangles lie around the point in the ray's
+/// projection) exactly when every side agrees; a silhouette (the fan
+/// folded) has both. `None` where the listed triangles are not joined by
+/// shared edges.
+fn oriented_alike(triangles: &[[u32; 3]], tris: &[usize], fronts: &[bool]) -> Option<Vec<bool>> {
+    let edges = |i: usize| {
+        let t = triangles[tris[i]];
+        [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
+    };
+    let mut flip: Vec<Option<bool>> = vec![None; tris.len()];
+    let Some(first) = flip.first_mut() else {
+        return Some(Vec::new());
+    };
+    *first = Some(false);
+    for _ in 0..tris.len() {
+        for i in 0..tris.len() {
+            let Some(fi) = flip[i] else { continue };
+            let ei = edges(i);
+            for (j, slot) in flip.iter_mut().enumerate() {
+                if slot.is_some() {
+                    continue;
+                }
+                let ej = edges(j);
+                for &(a, b) in &ei {
+                    if ej.contains(&(a, b)) {
+                        *slot = Some(!fi);
+                    } else if ej.contains(&(b, a)) {
+                        *slot = Some(fi);
+                    }
+                }
+            }
+        }
+    }
+    flip.iter()
+        .zip(fronts)
+        .map(|(f, &front)| f.map(|f| front != f))
+        .collect()
+}
+
+/// The crate on one `mesh_side` query: `TriangleMesh::side` must give the
+/// file's side exactly.
+fn crate_mesh_side(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |file: &MeshFile| {
+        TriangleMesh::new(&file.vertices, &file.triangles).map_err(|e| e.to_string())
+    };
+    mesh_queries(lines, setup, |_, mesh, q| match q {
+        MeshQuery::Side { p, side } => {
+            let got = match mesh.side(*p).map_err(|e| e.to_string())? {
+                MeshSide::Inside => 1,
+                MeshSide::OnBoundary => 0,
+                MeshSide::Outside => -1,
+            };
+            Ok(verdict(
+                got == *side,
+                format!("side {side}"),
+                format!("side {got}"),
+            ))
+        }
+        other => Err(not_this_kind(other)),
+    })
+}
+
+/// The oracle's exact winding number (`mesh_oracle::winding_number`) must
+/// give the same side: on a triangle, around the point (inside) or not.
+fn oracle_mesh_side(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |file: &MeshFile| -> Result<Vec<[usize; 3]>, String> {
+        Ok(file
+            .triangles
+            .iter()
+            .map(|t| t.map(|k| k as usize))
+            .collect())
+    };
+    mesh_queries(lines, setup, |file, tris, q| match q {
+        MeshQuery::Side { p, side } => {
+            let got = match mesh_oracle::winding_number(*p, &file.vertices, tris) {
+                None => 0,
+                Some(0) => -1,
+                Some(_) => 1,
+            };
+            Ok(verdict(
+                got == *side,
+                format!("side {side}"),
+                format!("side {got}"),
+            ))
+        }
+        other => Err(not_this_kind(other)),
+    })
 }
 
 fn crate_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
@@ -1223,7 +1425,20 @@ fn oracle_ray_mesh(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
                 format!("blocked {got}"),
             ))
         }
+        other => Err(not_this_kind(other)),
     })
+}
+
+/// The error for a query line of another mesh kind (a `p` line in a
+/// `ray_mesh` file, say).
+fn not_this_kind(q: &MeshQuery) -> String {
+    let tag = match q {
+        MeshQuery::Ray { .. } => "r",
+        MeshQuery::Segment { .. } => "s",
+        MeshQuery::Side { .. } => "p (mesh_side)",
+        MeshQuery::Closest { .. } => "p (mesh_closest)",
+    };
+    format!("a {tag} line does not belong to this kind")
 }
 
 // ---------------------------------------------------------------------------
@@ -1855,4 +2070,26 @@ fn scaled_copies_scale_the_configuration_only() {
     assert_eq!(left_out, 2);
     let (copy, left_out) = scaled_copy(kind("ray_mesh"), &lines, -100);
     assert_eq!((copy.len(), left_out), (6, 0));
+}
+
+/// The fan's orientation: a neighbour running the shared edge the other
+/// way keeps its side, one running it the same way has it flipped; a
+/// triangle joined by no shared edge leaves the fan without one.
+#[test]
+fn fans_are_taken_in_one_orientation() {
+    let triangles = [[0, 1, 2], [0, 2, 3], [2, 0, 4], [5, 6, 7], [3, 0, 4]];
+    assert_eq!(
+        oriented_alike(&triangles, &[0, 1], &[true, true]),
+        Some(vec![true, true])
+    );
+    assert_eq!(
+        oriented_alike(&triangles, &[0, 2], &[true, false]),
+        Some(vec![true, true])
+    );
+    // Around vertex 0: the third joined to the fan through the second only.
+    assert_eq!(
+        oriented_alike(&triangles, &[0, 1, 4], &[true, true, false]),
+        Some(vec![true, true, true])
+    );
+    assert_eq!(oriented_alike(&triangles, &[0, 3], &[true, true]), None);
 }

@@ -14,7 +14,8 @@
 
 use arbitrary::{Arbitrary, Unstructured};
 use exactray::scene::TriangleMesh;
-use exactray_fuzz::{LatticeMesh, lattice};
+use exactray::testing::lattice_point;
+use exactray_fuzz::LatticeMesh;
 use exactray_oracle::closest_oracle::{closest_triangles, difference, dyadic, product};
 use exactray_oracle::mesh_oracle::Frac;
 use libfuzzer_sys::fuzz_target;
@@ -45,7 +46,7 @@ fuzz_target!(|data: &[u8]| {
     let (Ok(edit), Ok(pick)) = (u8::arbitrary(&mut u), u8::arbitrary(&mut u)) else {
         return;
     };
-    let Ok(mut p) = lattice(&mut u, edit % 5 == 4 || raw, scale) else {
+    let Ok(mut p) = lattice_point(&mut u, edit % 5 == 4 || raw, 2.0 * scale) else {
         return;
     };
     let tri = triangles[usize::from(pick) % nt].map(|i| vertices[i as usize]);

@@ -19,11 +19,11 @@ use arbitrary::{Arbitrary, Unstructured};
 use exactray::interval::Interval;
 use exactray::query::ray::{EXACT_T_ULPS, Exact, Ray};
 use exactray::scene::TriangleMesh;
-use exactray::testing::finite_f64_from_bits;
-use exactray_fuzz::{LatticeMesh, lattice};
+use exactray::testing::{finite_f64_from_bits, lattice_point};
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
 use glam::DVec3;
+use exactray_fuzz::LatticeMesh;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
@@ -42,7 +42,10 @@ fuzz_target!(|data: &[u8]| {
     let (Ok(edit), Ok(pick)) = (u8::arbitrary(&mut u), u8::arbitrary(&mut u)) else {
         return;
     };
-    let (Ok(mut o), Ok(mut d)) = (lattice(&mut u, raw, scale), lattice(&mut u, raw, scale)) else {
+    let (Ok(mut o), Ok(mut d)) = (
+        lattice_point(&mut u, raw, 2.0 * scale),
+        lattice_point(&mut u, raw, 2.0 * scale),
+    ) else {
         return;
     };
     let tri = triangles[usize::from(pick) % nt].map(|i| vertices[i as usize]);

@@ -2,20 +2,8 @@
 //! bytes, on a lattice at a power-of-two scale or from raw bit patterns.
 
 use arbitrary::{Arbitrary, Unstructured};
-use exactray::testing::finite_f64_from_bits;
+use exactray::testing::lattice_point;
 use glam::DVec3;
-
-/// A point: three raw bit patterns (any finite `f64`), or three `i8` on
-/// the lattice of even multiples of `scale` (so that midpoints of lattice
-/// points are exact).
-pub fn lattice(u: &mut Unstructured, raw: bool, scale: f64) -> arbitrary::Result<DVec3> {
-    if raw {
-        let b = <[u64; 3]>::arbitrary(u)?;
-        return Ok(DVec3::from_array(b.map(finite_f64_from_bits)));
-    }
-    let c = <[i8; 3]>::arbitrary(u)?;
-    Ok(DVec3::from_array(c.map(|x| f64::from(x) * 2.0 * scale)))
-}
 
 /// A mesh of 3 to 8 vertices and 1 to 8 triangles over them (shared edges
 /// and vertices, degenerate triangles at times).
@@ -34,7 +22,8 @@ pub struct LatticeMesh {
 
 impl LatticeMesh {
     /// Decodes a mode byte (`% 8 == 7`: raw; `3 + mode / 8 % 6`
-    /// vertices), an `i16` for `k`, the vertices ([`lattice`]), a
+    /// vertices), an `i16` for `k`, the vertices (`lattice_point` with a
+    /// step of `2 scale`, so that midpoints are exact), a
     /// triangle-count byte (`1 + b % 8`) and three index bytes per
     /// triangle; `None` when the bytes run out.
     pub fn decode(u: &mut Unstructured) -> Option<LatticeMesh> {
@@ -46,7 +35,7 @@ impl LatticeMesh {
         let nv = 3 + usize::from(mode / 8 % 6);
         let mut vertices = Vec::with_capacity(nv);
         for _ in 0..nv {
-            vertices.push(lattice(u, raw, scale).ok()?);
+            vertices.push(lattice_point(u, raw, 2.0 * scale).ok()?);
         }
         let nt = 1 + usize::from(u8::arbitrary(u).unwrap_or(0) % 8);
         let mut triangles = Vec::with_capacity(nt);

@@ -197,7 +197,7 @@ impl TriangleMesh {
             reach: max.map_or(f64::INFINITY, |(_, m2)| m2.hi),
         };
         walk_point(&self.bvh, q, s, &mut nearest);
-        for &t in &self.left_out {
+        for &t in &self.topology.left_out {
             nearest.consider(t);
         }
         let (triangle, _) = nearest.best?;
@@ -215,19 +215,12 @@ impl TriangleMesh {
         if let Some((lo, hi)) = self.bvh.bounds() {
             largest = largest.max(lo.abs().max(hi.abs()).max_element());
         }
-        for &t in &self.left_out {
+        for &t in &self.topology.left_out {
             for v in self.corners(t) {
                 largest = largest.max(v.abs().max_element());
             }
         }
         largest
-    }
-
-    /// The vertices of triangle `index` (an index of the mesh).
-    #[inline(always)]
-    fn corners(&self, index: u32) -> [DVec3; 3] {
-        let vertices = self.vertices();
-        self.triangles()[index as usize].map(|i| vertices[i as usize])
     }
 }
 

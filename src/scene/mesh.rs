@@ -45,6 +45,7 @@
 
 use super::shading;
 use super::spawn::Segment;
+use super::topology::{Topology, in_hierarchy};
 use crate::bvh::boxes::{BoxBvh, BvhBuilder, Item, Visitor, walk, walk_halved_segment};
 use crate::error::InputError;
 use crate::interval::Interval;
@@ -66,9 +67,9 @@ pub struct TriangleMesh {
     triangles: Vec<[u32; 3]>,
     normals: Option<Vec<DVec3>>,
     pub(super) bvh: BoxBvh,
-    /// The triangles left out of the hierarchy, ascending (for the
-    /// closest-point query, to which they still count).
-    pub(super) left_out: Vec<u32>,
+    /// Whether the mesh is closed, and the triangles the hierarchy leaves
+    /// out (`topology.rs`).
+    pub(super) topology: Topology,
 }
 
 /// The closest hit of a ray on a [`TriangleMesh`].
@@ -141,15 +142,13 @@ impl TriangleMesh {
             triangles: triangles.to_vec(),
             normals: None,
             bvh: BoxBvh::EMPTY,
-            left_out: Vec::new(),
+            topology: Topology::EMPTY,
         };
-        let mut left_out = Vec::new();
         let items: Vec<Item> = (0..mesh.triangles.len() as u32)
             .filter_map(|index| {
                 let tri = mesh.shape(index);
                 // Never hit: left out (see the module docs).
-                if tri.degenerate || tri.normal() == DVec3::ZERO {
-                    left_out.push(index);
+                if !in_hierarchy(&tri) {
                     return None;
                 }
                 let [a, b, c] = tri.v;
@@ -161,7 +160,7 @@ impl TriangleMesh {
             })
             .collect();
         mesh.bvh = BoxBvh::build(items, builder);
-        mesh.left_out = left_out;
+        mesh.topology = Topology::of(&mesh.triangles, &mesh.bvh.order);
         Ok(mesh)
     }
 
@@ -306,19 +305,27 @@ impl TriangleMesh {
             ),
         }
         let (t, triangle, th) = v.best?;
+        Some(self.mesh_hit(ray, t, triangle, &th))
+    }
+
+    /// The [`MeshHit`] of `ray` on triangle `triangle` at the certified
+    /// parameter `t` with the test's hit `th`: its point, normal and
+    /// shading normal.
+    #[inline]
+    pub(super) fn mesh_hit(&self, ray: &Ray, t: f64, triangle: u32, th: &TriangleHit) -> MeshHit {
         let tri = self.leaf_shape(triangle);
         let normal = tri.normal();
         let shading_normal = self.normals.as_ref().map(|n| {
             let [a, b, c] = self.triangles[triangle as usize].map(|i| n[i as usize]);
             shading::interpolate(a, b, c, th.u, th.v, normal)
         });
-        Some(MeshHit {
+        MeshHit {
             triangle,
             hit: Hit::at_plane_t(ray, t, normal),
             u: th.u,
             v: th.v,
             shading_normal,
-        })
+        }
     }
 
     /// Whether `ray` meets the mesh for some `t` in `range` (a shadow

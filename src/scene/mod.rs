@@ -1,6 +1,8 @@
 //! Ray queries over triangle meshes (with `alloc`): [`TriangleMesh`], its
 //! closest hit ([`MeshHit`]) and shadow-ray queries over a bounding-volume
-//! hierarchy; a [`Scene`] of meshes and analytic shapes, each with its
+//! hierarchy, every crossing of a ray in exact order
+//! ([`TriangleMesh::all_hits`]) and the exact side of a point against a
+//! closed mesh ([`TriangleMesh::side`]); a [`Scene`] of meshes and analytic shapes, each with its
 //! [`PrimitiveId`], under a two-level hierarchy ([`SceneBuilder`],
 //! [`SceneHit`]; [`Scene`] says what its queries decide); batch
 //! forms of both, in parallel with rayon ([`BatchQueries`]); secondary
@@ -28,13 +30,16 @@
 
 mod batch;
 mod closest;
+mod crossings;
 mod mesh;
 mod primitives;
 mod shading;
 mod spawn;
+mod topology;
 
 pub use batch::BatchQueries;
 pub use closest::ClosestPoint;
+pub use crossings::{HitCount, MeshCrossings, MeshSide};
 pub use mesh::{MAX_TRIANGLES, MeshHit, TraceStats, TriangleMesh};
 pub use primitives::{
     AnalyticShape, MAX_PRIMITIVES, Primitive, PrimitiveId, Scene, SceneBuilder, SceneHit,

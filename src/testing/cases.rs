@@ -278,6 +278,9 @@ impl From<[DVec3; 5]> for PlaneSideInput {
 }
 
 #[cfg(feature = "arbitrary")]
+pub use arbitrary_impls::lattice_point;
+
+#[cfg(feature = "arbitrary")]
 mod arbitrary_impls {
     use super::{
         IncircleInput, InsphereInput, Orient2dInput, Orient3dInput, PlaneSideInput,
@@ -298,6 +301,21 @@ mod arbitrary_impls {
 
     fn dvec3(u: &mut Unstructured<'_>) -> Result<DVec3> {
         Ok(DVec3::new(coord(u)?, coord(u)?, coord(u)?))
+    }
+
+    /// A point for a fuzz target's mesh or ray: three raw bit patterns
+    /// made finite ([`finite_f64_from_bits`]) when `raw`, else three `i8`s
+    /// times `step`, a small lattice on which points coincide, edges are
+    /// shared and midpoints are exact.
+    ///
+    /// # Errors
+    /// When `u` runs out of data.
+    pub fn lattice_point(u: &mut Unstructured<'_>, raw: bool, step: f64) -> Result<DVec3> {
+        if raw {
+            return dvec3(u);
+        }
+        let c = <[i8; 3]>::arbitrary(u)?;
+        Ok(DVec3::from_array(c.map(|x| f64::from(x) * step)))
     }
 
     const fn exact_hint(coords: usize) -> (usize, Option<usize>) {

@@ -391,6 +391,61 @@ pub fn uv_sphere(center: DVec3, radius: f64, rings: u32, segments: u32) -> Scene
     }
 }
 
+/// The six unit vectors along the axes, `+x, -x, +y, -y, +z, -z`: the
+/// directions of [`closed_octahedron`]'s vertices from its centre (its
+/// exact vertex normals).
+pub const AXIS_DIRECTIONS: [DVec3; 6] = [
+    DVec3::X,
+    DVec3::NEG_X,
+    DVec3::Y,
+    DVec3::NEG_Y,
+    DVec3::Z,
+    DVec3::NEG_Z,
+];
+
+/// The closed octahedron `|x - c_x| + |y - c_y| + |z - c_z| <= r`: its
+/// vertices `c ± r` along each axis (`+x, -x, +y, -y, +z, -z`), its eight
+/// triangles counterclockwise seen from outside. Every edge is shared by
+/// two triangles running along it in opposite directions.
+pub fn closed_octahedron(c: DVec3, r: f64) -> SceneMesh {
+    let mut triangles = Vec::with_capacity(8);
+    for x in [0u32, 1] {
+        for y in [2u32, 3] {
+            for z in [4u32, 5] {
+                // Counterclockwise from outside when the octant's signs
+                // multiply to +1.
+                let positive = (x + y + z).is_multiple_of(2);
+                triangles.push(if positive { [x, y, z] } else { [x, z, y] });
+            }
+        }
+    }
+    SceneMesh::new(AXIS_DIRECTIONS.map(|d| c + d * r).to_vec(), triangles)
+}
+
+/// The closed cube `[lo, hi]^3`: vertex `x + 2y + 4z` at the corner whose
+/// coordinates are `hi` where the bit is set, two triangles per face,
+/// counterclockwise seen from outside.
+pub fn closed_cube(lo: f64, hi: f64) -> SceneMesh {
+    let vertices = (0..8)
+        .map(|i| DVec3::from_array([i & 1, i & 2, i & 4].map(|b| if b == 0 { lo } else { hi })))
+        .collect();
+    let triangles = vec![
+        [0, 2, 3],
+        [0, 3, 1],
+        [4, 5, 7],
+        [4, 7, 6],
+        [0, 1, 5],
+        [0, 5, 4],
+        [2, 6, 7],
+        [2, 7, 3],
+        [0, 4, 6],
+        [0, 6, 2],
+        [1, 3, 7],
+        [1, 7, 5],
+    ];
+    SceneMesh::new(vertices, triangles)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -63,28 +63,9 @@ pub const SCENE_PLACES: [(f64, f64); 21] = [
 /// A closed octahedron around `c` of radius `r`, its triangles
 /// counterclockwise seen from outside, with the exact unit vertex normals.
 fn octahedron(c: DVec3, r: f64) -> Option<TriangleMesh> {
-    let dirs = [
-        DVec3::X,
-        DVec3::NEG_X,
-        DVec3::Y,
-        DVec3::NEG_Y,
-        DVec3::Z,
-        DVec3::NEG_Z,
-    ];
-    let vertices = dirs.map(|d| c + d * r);
-    let mut triangles = Vec::with_capacity(8);
-    for x in [0u32, 1] {
-        for y in [2u32, 3] {
-            for z in [4u32, 5] {
-                // Counterclockwise from outside when the octant's signs
-                // multiply to +1.
-                let positive = (x + y + z).is_multiple_of(2);
-                triangles.push(if positive { [x, y, z] } else { [x, z, y] });
-            }
-        }
-    }
-    TriangleMesh::new(&vertices, &triangles)
-        .and_then(|m| m.with_normals(&dirs))
+    let mesh = super::meshes::closed_octahedron(c, r);
+    TriangleMesh::new(&mesh.vertices, &mesh.triangles)
+        .and_then(|m| m.with_normals(&super::meshes::AXIS_DIRECTIONS))
         .ok()
 }
 

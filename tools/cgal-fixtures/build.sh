@@ -16,7 +16,7 @@ mkdir -p "$here/build"
 # on them).
 flags="-std=c++17 -O2 -frounding-math -ffp-contract=off -Wall -Wextra"
 objects=""
-for unit in generate predicates implicit nearest ray_quadrics ray_triangle ray_mesh; do
+for unit in generate predicates implicit nearest ray_quadrics ray_triangle ray_mesh mesh_points; do
     src="$here/$unit.cpp"
     obj="$here/build/$unit.o"
     stale=0

@@ -362,7 +362,10 @@ void gen_ray_cone_files(const std::string& outdir);
 void gen_ray_quadric_files(const std::string& outdir);
 void gen_ray_triangle_files(const std::string& outdir);
 
-// ray_mesh.cpp: ray_mesh-<mesh>.txt, one mesh per file.
+// ray_mesh.cpp: ray_mesh-<mesh>.txt, one mesh per file; mesh_points.cpp:
+// mesh_side-<mesh>.txt and mesh_closest-<mesh>.txt.
 void gen_ray_mesh_files(const std::string& outdir);
+void gen_mesh_side_files(const std::string& outdir);
+void gen_mesh_closest_files(const std::string& outdir);
 
 }  // namespace fixtures

@@ -68,6 +68,8 @@ const KindEntry KINDS[] = {
     {"ray_quadric", nullptr, gen_ray_quadric_files},
     {"ray_triangle", nullptr, gen_ray_triangle_files},
     {"ray_mesh", nullptr, gen_ray_mesh_files},
+    {"mesh_side", nullptr, gen_mesh_side_files, "Epeck"},
+    {"mesh_closest", nullptr, gen_mesh_closest_files, "Epeck"},
 };
 
 }  // namespace

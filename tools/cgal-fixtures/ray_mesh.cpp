@@ -14,145 +14,13 @@
 // segment). The first t is the least entry over the triangles; the tri list
 // every triangle whose span holds it.
 
+#include "lattice_mesh.h"
 #include "ray.h"
 
 #include <CGAL/intersections.h>
 
 namespace fixtures {
 namespace {
-
-using Tri3 = std::array<int, 3>;
-
-// A mesh on the lattice: integer points (times 2^e, plus an integer offset
-// before scaling), triangles by index.
-struct LatticeMesh {
-  std::string name, what;
-  int e = 0;
-  std::vector<I3> pts;
-  std::vector<Tri3> tris;
-
-  P3 at(const I3& x) const { return lattice3(x, e); }
-  std::vector<P3> vertices() const {
-    std::vector<P3> v;
-    for (const I3& p : pts) v.push_back(at(p));
-    return v;
-  }
-  // Every edge (a < b) and how many triangles use it.
-  std::map<std::pair<int, int>, int> edges() const {
-    std::map<std::pair<int, int>, int> count;
-    for (const Tri3& t : tris)
-      for (int k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
-    return count;
-  }
-  I3 lo() const {
-    I3 m = pts[0];
-    for (const I3& p : pts)
-      for (int k = 0; k < 3; ++k) m[k] = std::min(m[k], p[k]);
-    return m;
-  }
-  I3 hi() const {
-    I3 m = pts[0];
-    for (const I3& p : pts)
-      for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], p[k]);
-    return m;
-  }
-  I3 centre() const {
-    I3 a = lo(), b = hi();
-    return I3{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-  }
-  I3 normal(int t) const {
-    const Tri3& x = tris[t];
-    return cross3(sub3(pts[x[1]], pts[x[0]]), sub3(pts[x[2]], pts[x[0]]));
-  }
-  void shift(const I3& off) {
-    for (I3& p : pts) p = add3(p, off);
-  }
-};
-
-// ---------------------------------------------------------------------------
-// Meshes
-
-void add_quad(std::vector<Tri3>& t, int a, int b, int c, int d) {
-  t.push_back({a, b, c});
-  t.push_back({a, c, d});
-}
-
-LatticeMesh octahedron(int64_t R, int e) {
-  LatticeMesh m;
-  m.e = e;
-  m.pts = {{R, 0, 0}, {-R, 0, 0}, {0, R, 0}, {0, -R, 0}, {0, 0, R}, {0, 0, -R}};
-  for (int sx : {0, 1})
-    for (int sy : {2, 3})
-      for (int sz : {4, 5}) m.tris.push_back({sx, sy, sz});
-  return m;
-}
-
-LatticeMesh cube(int64_t R, int e) {
-  LatticeMesh m;
-  m.e = e;
-  for (int i = 0; i < 8; ++i) m.pts.push_back({i & 1 ? R : -R, i & 2 ? R : -R, i & 4 ? R : -R});
-  add_quad(m.tris, 0, 1, 3, 2);  // z = -R
-  add_quad(m.tris, 4, 6, 7, 5);  // z = +R
-  add_quad(m.tris, 0, 4, 5, 1);  // y = -R
-  add_quad(m.tris, 2, 3, 7, 6);  // y = +R
-  add_quad(m.tris, 0, 2, 6, 4);  // x = -R
-  add_quad(m.tris, 1, 5, 7, 3);  // x = +R
-  return m;
-}
-
-// The octahedron subdivided `levels` times (each triangle into four), every
-// vertex pushed out to radius R (rounded to an integer, then times 24):
-// closed, with shared edges and vertices of valence 4, 5 and 6.
-LatticeMesh octasphere(int levels, int64_t R, int e) {
-  std::vector<P3> dirs = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  std::vector<Tri3> tris = octahedron(1, 0).tris;
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      dirs.push_back(pnormalize(padd(dirs[a], dirs[b])));
-      return mid[key] = int(dirs.size()) - 1;
-    };
-    std::vector<Tri3> next;
-    for (const Tri3& t : tris) {
-      int ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-      next.push_back({t[0], ab, ca});
-      next.push_back({ab, t[1], bc});
-      next.push_back({ca, bc, t[2]});
-      next.push_back({ab, bc, ca});
-    }
-    tris = next;
-  }
-  LatticeMesh m;
-  m.e = e;
-  for (const P3& d : dirs) {
-    I3 p;
-    for (int k = 0; k < 3; ++k) p[k] = 24 * int64_t(std::nearbyint(d[k] * double(R)));
-    m.pts.push_back(p);
-  }
-  m.tris = tris;
-  return m;
-}
-
-// An n x n height field: lattice points (24 S i, 24 S j, 24 h), h random in
-// [-H, H], each square split along a diagonal chosen at random.
-LatticeMesh height_field(Rng& r, int n, int64_t S, int64_t H, int e) {
-  LatticeMesh m;
-  m.e = e;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) m.pts.push_back({24 * S * i, 24 * S * j, 24 * r.range(-H, H)});
-  auto id = [n](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      if (r.chance(50))
-        add_quad(m.tris, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-      else
-        add_quad(m.tris, id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), id(i, j));
-    }
-  return m;
-}
 
 // ---------------------------------------------------------------------------
 // Exact answers
@@ -405,17 +273,6 @@ class MeshFile {
   int n_ = 0, total_ = 0;
 };
 
-// Calls make(r) until `n` queries are written (make returns how many it
-// wrote), or dies.
-template <class F>
-void repeat(MeshFile& f, Rng& r, int n, F make) {
-  int made = 0;
-  for (int tries = 0; made < n; ++tries) {
-    if (tries > 50 * n) die("ray_mesh-%s: a section keeps failing", f.mesh().name.c_str());
-    made += make(r);
-  }
-}
-
 // ---------------------------------------------------------------------------
 // Query constructions. X is a lattice point (integers); rays o = X - S D,
 // d = D 2^k, with D an integer direction, are exact.
@@ -427,40 +284,6 @@ I3 towards(Rng& r, const I3& from, const I3& to, int j) {
   do D = add3(sub3(to, from), bits3(r, j));
   while (zero3(D));
   return D;
-}
-
-// A lattice point at a random vertex, k/24 of the way along a random edge,
-// or a random lattice point of a random face ((a v0 + b v1 + c v2) / 24).
-I3 vertex_point(Rng& r, const LatticeMesh& m) { return m.pts[r.next() % m.pts.size()]; }
-
-I3 edge_point(Rng& r, const LatticeMesh& m) {
-  const Tri3& t = m.tris[r.next() % m.tris.size()];
-  int k = int(r.next() % 3);
-  const I3 &a = m.pts[t[k]], &b = m.pts[t[(k + 1) % 3]];
-  int64_t w = r.chance(40) ? 12 : r.range(1, 23);
-  I3 step = sub3(b, a);
-  for (int64_t& c : step) {
-    if (c % 24 != 0) die("ray_mesh: an edge not a multiple of 24");
-    c /= 24;
-  }
-  return add3(a, mul3(step, w));
-}
-
-I3 face_point(Rng& r, const LatticeMesh& m, int t, bool inside) {
-  int64_t w1, w2;
-  if (inside) {
-    int64_t w0 = r.range(1, 22);
-    w1 = r.range(1, 23 - w0), w2 = 24 - w0 - w1;
-  } else {
-    w1 = r.range(-30, 40), w2 = r.range(-30, 40);
-  }
-  // v0 + (w1 (v1 - v0) + w2 (v2 - v0)) / 24: the edges are multiples of 24
-  // (an offset moves both ends).
-  const Tri3& x = m.tris[t];
-  I3 U = sub3(m.pts[x[1]], m.pts[x[0]]), V = sub3(m.pts[x[2]], m.pts[x[0]]);
-  for (int64_t& c : U) c /= 24;
-  for (int64_t& c : V) c /= 24;
-  return add3(m.pts[x[0]], add3(mul3(U, w1), mul3(V, w2)));
 }
 
 // Bits of a direction about as long as the mesh is wide.
@@ -647,6 +470,55 @@ void common_sections(MeshFile& f, int spread, bool closed, bool coplanar, int n)
   }
 }
 
+// Across the whole range: a mesh at 2^971 (ends of the lattice at
+// +-(2^53 - 1) 2^971 = +-f64::MAX), queries whose ends lie on opposite
+// sides of it, through a vertex or edge point X exactly: a ray from X - D
+// along D 2^-k (t = 2^k), a segment from X - D to X + D, or either moved
+// by a lattice offset (mostly missing). |D| >= 2^52 on one axis, so that
+// the segment's q - p (2 D 2^971) overflows.
+I3 across(Rng& r, const I3& X) {
+  // Room for an offset of up to 2^46 on every coordinate.
+  const int64_t lim = (int64_t(1) << 53) - 1 - (int64_t(1) << 47);
+  I3 D;
+  for (int k = 0; k < 3; ++k) {
+    int64_t room = lim - std::llabs(X[k]);
+    D[k] = r.range(-room, room);
+  }
+  int a = int(r.next() % 3);
+  D[a] = r.sign() * r.range(int64_t(1) << 52, lim - std::llabs(X[a]));
+  return D;
+}
+
+int ray_across(MeshFile& f, Rng& r, const I3& X) {
+  const LatticeMesh& m = f.mesh();
+  I3 D = across(r, X);
+  I3 off = r.chance(30) ? bits3(r, 46) : I3{0, 0, 0};
+  return f.ray(m.at(add3(sub3(X, D), off)), lattice3(D, m.e - int(r.range(0, 4)))) ? 1 : 0;
+}
+
+int segment_across(MeshFile& f, Rng& r, const I3& X) {
+  const LatticeMesh& m = f.mesh();
+  I3 D = across(r, X);
+  I3 off = r.chance(40) ? bits3(r, 46) : I3{0, 0, 0};
+  return f.segment(m.at(add3(sub3(X, D), off)), m.at(add3(add3(X, D), off))) ? 1 : 0;
+}
+
+void write_range_mesh(const std::string& outdir, int n) {
+  LatticeMesh m = octasphere(1, int64_t(1) << 43, 971);
+  m.name = "range";
+  m.what = "an octahedron subdivided once (32 triangles; closed), radius 1.5 2^1019, rays and segments from one end "
+           "of the range to the other";
+  MeshFile f(m);
+  Rng r = f.section("rays-across", "rays from beyond 2^1020 on one side through a vertex or edge point, or offset", "hm");
+  repeat(f, r, n, [&](Rng& r) { return ray_across(f, r, r.chance(50) ? vertex_point(r, m) : edge_point(r, m)); });
+  r = f.section("segments-across",
+                "segments between ends on opposite sides of the range (q - p overflows), through a vertex or edge "
+                "point, or offset",
+                "bf");
+  repeat(f, r, n, [&](Rng& r) { return segment_across(f, r, r.chance(50) ? vertex_point(r, m) : edge_point(r, m)); });
+  f.finish(outdir);
+}
+
 // Writes ray_mesh-<name>.txt: the mesh and its common sections.
 void write_mesh(const std::string& outdir, LatticeMesh m, const char* name, const char* what, int spread, bool closed,
                 bool coplanar, int n) {
@@ -689,6 +561,7 @@ void gen_ray_mesh_files(const std::string& outdir) {
   write_mesh(outdir, nested, "nested",
              "two octahedra subdivided once, radii 24 and 24 (1 - 2^-20): one inside the other, 64 triangles", 26,
              true, false, 30);
+  write_range_mesh(outdir, 40);
 }
 
 }  // namespace fixtures

@@ -4,7 +4,8 @@
 # orient3d_lpi.txt, orient3d_tpi.txt, orient2d_ssi.txt, less_on_axis_lpi.txt,
 # one nearest-<set>.txt per point set, and ray_sphere.txt, ray_cylinder.txt,
 # ray_cone.txt, ray_quadric.txt, ray_triangle.txt, one ray_mesh-<mesh>.txt
-# per mesh (other files there are left alone). The output is deterministic:
+# per mesh, and one mesh_side-<mesh>.txt and mesh_closest-<mesh>.txt per
+# closed mesh (other files there are left alone). The output is deterministic:
 # rerunning gives byte-identical files.
 #
 #   tools/cgal-fixtures/regenerate.sh          rewrite tests/fixtures/
@@ -34,7 +35,7 @@ if [ "${1:-}" = "--check" ]; then
     done
     # A nearest set or ray file the generator no longer writes (renamed or
     # removed).
-    for f in "$dest"/nearest-*.txt "$dest"/ray_*.txt; do
+    for f in "$dest"/nearest-*.txt "$dest"/ray_*.txt "$dest"/mesh_*.txt; do
         [ -f "$f" ] || continue
         if [ ! -f "$tmp/$(basename "$f")" ]; then
             echo "not generated (remove it?): tests/fixtures/$(basename "$f")" >&2

@@ -27,6 +27,10 @@ little-endian, fields in order):
   3 index bytes per triangle, an edit byte (% 5: 0 the point halved, 1 at
   a vertex, 2 at an edge's midpoint, 4 raw bit patterns) and a pick byte,
   then the query point (as the vertices, or raw).
+- mesh_side: a mode byte (mode % 16 == 15: raw bit patterns; bit 16: the
+  cube, else the octahedron), a scale i16 (2^(k % 1001)), the 6 or 8
+  vertices (3 i8 each, or 3 u64 bit patterns), an edit byte and a pick
+  byte, the point (as the vertices), a nudge i8, the ray's target.
 - predicates: a selector byte (predicate = selector % 5, mode = selector / 5
   % 4: 2 takes a case from the library's hard generators, 3 the same with
   edits that may plant a NaN or an infinity), an input-class byte (% 6:
@@ -226,6 +230,45 @@ def closest_cases(rng):
         yield out
 
 
+def side_cases(rng):
+    # The octahedron's or the cube's triangles over their own vertices
+    # (radius or side up to 20 lattice steps, jittered one time in four;
+    # raw bit patterns one time in ten), each point edit (a vertex, an edge's
+    # midpoint, a face point, a lattice point), nudges of up to two units
+    # of rounding, and rays aimed at a vertex, an edge's midpoint or a point.
+    while True:
+        raw = rng.random() < 0.1
+        cube = rng.random() < 0.5
+        mode = (15 if raw else rng.randrange(15)) + (16 if cube else 0)
+        r = rng.randrange(1, 21)
+        jitter = rng.random() < 0.25
+
+        def lattice(p):
+            if raw:
+                return b"".join(struct.pack("<Q", bits(x)) for x in vec(rng))
+            if jitter:
+                p = [max(-128, min(127, c + rng.randrange(-2, 3))) for c in p]
+            return struct.pack("<3b", *p)
+
+        if cube:
+            corners = [[(i >> k & 1) * r for k in range(3)] for i in range(8)]
+        else:
+            corners = []
+            for k in range(3):
+                for sign in (1, -1):
+                    c = [0, 0, 0]
+                    c[k] = sign * r
+                    corners.append(c)
+        out = bytes([mode]) + struct.pack("<h", rng.randrange(-1000, 1001))
+        for c in corners:
+            out += lattice(c)
+        out += bytes([rng.randrange(256), rng.randrange(256)])
+        out += lattice([rng.randrange(-24, 25) for _ in range(3)])
+        out += struct.pack("<b", rng.randrange(-2, 3))
+        out += lattice([rng.randrange(-24, 25) for _ in range(3)])
+        yield out
+
+
 def corpus(name, cases, seed):
     rng = random.Random(seed)
     out = {}
@@ -244,7 +287,8 @@ def main() -> int:
                         corpus("predicates", predicate_cases, 15),
                         corpus("ray_mesh", mesh_cases, 16),
                         corpus("implicit", implicit_cases, 17),
-                        corpus("mesh_closest", closest_cases, 18)]:
+                        corpus("mesh_side", side_cases, 18),
+                        corpus("mesh_closest", closest_cases, 19)]:
         folder = ROOT / name
         have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
         if check:
