@@ -22,7 +22,8 @@
 //! - [`scene`] (with `alloc`): triangle meshes over a conservative BVH,
 //!   and scenes of meshes and analytic shapes over a two-level one:
 //!   closest hits, shadow rays, batches of both, secondary rays that never
-//!   hit their own surface, reflections that stay above it.
+//!   hit their own surface, reflections that stay above it; a mesh's
+//!   closest point to a query point, its triangle chosen exactly.
 //! - `testing` (with the `testing` feature): hard inputs, proptest
 //!   strategies and `Arbitrary` input types for users' own tests;
 //!   [`prelude`]: the vocabulary in one `use`.

@@ -23,33 +23,22 @@ use exactray::testing::{finite_f64_from_bits, lattice_point};
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
 use glam::DVec3;
+use exactray_fuzz::LatticeMesh;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let mut u = Unstructured::new(data);
-    let Ok(mode) = u8::arbitrary(&mut u) else {
+    let Some(LatticeMesh {
+        raw,
+        k,
+        scale,
+        mut vertices,
+        triangles,
+    }) = LatticeMesh::decode(&mut u)
+    else {
         return;
     };
-    let raw = mode % 8 == 7;
-    // 2^k for k in -1000..=1000, in two exact steps.
-    let k = i32::from(i16::arbitrary(&mut u).unwrap_or(0)) % 1001;
-    let scale = 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
-    let nv = 3 + usize::from(mode / 8 % 6);
-    let mut vertices = Vec::with_capacity(nv);
-    for _ in 0..nv {
-        let Ok(v) = lattice_point(&mut u, raw, 2.0 * scale) else {
-            return;
-        };
-        vertices.push(v);
-    }
-    let nt = 1 + usize::from(u8::arbitrary(&mut u).unwrap_or(0) % 8);
-    let mut triangles = Vec::with_capacity(nt);
-    for _ in 0..nt {
-        let Ok(t) = <[u8; 3]>::arbitrary(&mut u) else {
-            return;
-        };
-        triangles.push(t.map(|i| u32::from(i) % nv as u32));
-    }
+    let (nv, nt) = (vertices.len(), triangles.len());
     let (Ok(edit), Ok(pick)) = (u8::arbitrary(&mut u), u8::arbitrary(&mut u)) else {
         return;
     };

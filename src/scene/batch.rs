@@ -8,7 +8,11 @@ use crate::interval::Interval;
 use crate::query::ray::Ray;
 
 /// `out[i] = f(&queries[i])` for every `i`, on the calling thread.
-fn each_into<Q, R>(queries: &[Q], out: &mut [R], f: impl Fn(&Q) -> R) -> Result<(), InputError> {
+pub(super) fn each_into<Q, R>(
+    queries: &[Q],
+    out: &mut [R],
+    f: impl Fn(&Q) -> R,
+) -> Result<(), InputError> {
     InputError::check_lengths(queries.len(), out.len())?;
     for (q, o) in queries.iter().zip(out.iter_mut()) {
         *o = f(q);
@@ -30,7 +34,7 @@ fn each_into<Q, R>(queries: &[Q], out: &mut [R], f: impl Fn(&Q) -> R) -> Result<
 /// 1.79x on calls of 2048 rays and 1.89x to 1.92x on calls of 20,000,
 /// run after run (`scene_profile sphere 100000 primary 20000 batch`).
 #[cfg(feature = "rayon")]
-fn par_each_into<Q: Sync, R: Send>(
+pub(super) fn par_each_into<Q: Sync, R: Send>(
     queries: &[Q],
     out: &mut [R],
     f: impl Fn(&Q) -> R + Sync,

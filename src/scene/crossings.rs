@@ -289,7 +289,7 @@ impl TriangleMesh {
     /// The vertices of triangle `index` (in range: every caller holds one
     /// from the mesh).
     #[inline(always)]
-    fn corners(&self, index: u32) -> [DVec3; 3] {
+    pub(super) fn corners(&self, index: u32) -> [DVec3; 3] {
         self.triangles()[index as usize].map(|i| self.vertices()[i as usize])
     }
 }

@@ -29,6 +29,7 @@
 //! of [`crate::bvh::boxes`].
 
 mod batch;
+mod closest;
 mod crossings;
 mod mesh;
 mod primitives;
@@ -37,6 +38,7 @@ mod spawn;
 mod topology;
 
 pub use batch::BatchQueries;
+pub use closest::ClosestPoint;
 pub use crossings::{HitCount, MeshCrossings, MeshSide};
 pub use mesh::{MAX_TRIANGLES, MeshHit, TraceStats, TriangleMesh};
 pub use primitives::{

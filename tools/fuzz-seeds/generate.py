@@ -22,6 +22,11 @@ little-endian, fields in order):
   bit patterns), a triangle-count byte (1 + b % 8), 3 index bytes per
   triangle, an edit byte and a pick byte, the origin and direction (as the
   vertices), two i8 for the in-plane edit.
+- mesh_closest: a mode byte (as ray_mesh's), an i16 `k` (scale `2^(k %
+  1001)`), the vertices (as ray_mesh's), a triangle-count byte (1 + b % 8),
+  3 index bytes per triangle, an edit byte (% 5: 0 the point halved, 1 at
+  a vertex, 2 at an edge's midpoint, 4 raw bit patterns) and a pick byte,
+  then the query point (as the vertices, or raw).
 - mesh_side: a mode byte (mode % 16 == 15: raw bit patterns; bit 16: the
   cube, else the octahedron), a scale i16 (2^(k % 1001)), the 6 or 8
   vertices (3 i8 each, or 3 u64 bit patterns), an edit byte and a pick
@@ -162,6 +167,23 @@ def implicit_cases(rng):
         yield out
 
 
+def mesh_body(rng, nv, point):
+    """The vertices (`point()` each) and the triangles of a small mesh: a
+    triangle-count byte, then three index bytes per triangle, fans around
+    vertex 0 (shared edges) or random index triples."""
+    out = b""
+    for _ in range(nv):
+        out += point()
+    nt = rng.randrange(8)
+    out += bytes([nt])
+    for j in range(nt + 1):
+        if rng.random() < 0.7:
+            out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
+        else:
+            out += bytes(rng.randrange(nv) for _ in range(3))
+    return out
+
+
 def mesh_cases(rng):
     # Small meshes: fans around vertex 0 (shared edges) or random index
     # triples, lattice coordinates (raw bit patterns one time in ten), and
@@ -178,18 +200,33 @@ def mesh_cases(rng):
             return struct.pack("<3b", *[rng.randrange(-20, 21) for _ in range(3)])
 
         out = bytes([mode]) + struct.pack("<b", rng.randrange(-8, 9))
-        for _ in range(nv):
-            out += point()
-        nt = rng.randrange(8)
-        out += bytes([nt])
-        for j in range(nt + 1):
-            if rng.random() < 0.7:
-                out += bytes([0, 1 + j % (nv - 1), 1 + (j + 1) % (nv - 1)])
-            else:
-                out += bytes(rng.randrange(nv) for _ in range(3))
+        out += mesh_body(rng, nv, point)
         out += bytes([rng.randrange(6), rng.randrange(256)])
         out += point() + point()
         out += struct.pack("<2b", rng.randrange(-12, 13), rng.randrange(-12, 13))
+        yield out
+
+
+def closest_cases(rng):
+    # Small meshes with shared vertices on a lattice (raw bit patterns one
+    # time in ten) at scales 2^-1000..2^1000, degenerate triangles among
+    # them, and each of the target's query edits.
+    while True:
+        raw = rng.random() < 0.1
+        nv_sel = rng.randrange(6)
+        nv = 3 + nv_sel
+        mode = (7 if raw else rng.randrange(7)) + 8 * nv_sel
+        edit = rng.randrange(5)
+
+        def point(raw_point):
+            if raw_point:
+                return b"".join(struct.pack("<Q", bits(x)) for x in vec(rng))
+            return struct.pack("<3b", *[rng.randrange(-6, 7) for _ in range(3)])
+
+        out = bytes([mode]) + struct.pack("<h", rng.randrange(-1000, 1001))
+        out += mesh_body(rng, nv, lambda: point(raw))
+        out += bytes([edit, rng.randrange(256)])
+        out += point(raw or edit == 4)
         yield out
 
 
@@ -250,7 +287,8 @@ def main() -> int:
                         corpus("predicates", predicate_cases, 15),
                         corpus("ray_mesh", mesh_cases, 16),
                         corpus("implicit", implicit_cases, 17),
-                        corpus("mesh_side", side_cases, 18)]:
+                        corpus("mesh_side", side_cases, 18),
+                        corpus("mesh_closest", closest_cases, 19)]:
         folder = ROOT / name
         have = {p.name: p.read_bytes() for p in folder.glob("*")} if folder.exists() else {}
         if check:

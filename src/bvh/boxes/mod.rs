@@ -21,12 +21,14 @@ mod build;
 mod frame;
 #[cfg(feature = "ploc")]
 mod ploc;
+mod point_walk;
 mod traverse;
 mod wide;
 
 pub(crate) use build::Item;
 #[cfg(feature = "ploc")]
 pub use ploc::PlocQuality;
+pub(crate) use point_walk::{PointVisitor, box_distance_below, walk_point};
 pub(crate) use traverse::{Visitor, walk, walk_halved_segment};
 #[cfg(test)]
 pub(crate) use wide::WIDTH;

@@ -8,6 +8,8 @@
 //!   quadrics: the exact root count and correctly rounded roots.
 //! - [`implicit_oracle`]: predicates on constructed points (line–plane,
 //!   three-plane and line–line intersections) as exact rational points.
+//! - [`closest_oracle`]: the triangles of a mesh nearest to a point, by
+//!   brute force with exact squared distances.
 //! - [`mesh_oracle`]: rays and segments against triangle meshes by brute
 //!   force (`docs/fixture-format.md`'s `ray_mesh` rule: closed triangles, a ray in a
 //!   triangle's plane entering it).
@@ -15,6 +17,7 @@
 //! A workspace member of its own (`publish = false`), so that every user
 //! depends on it by name.
 
+pub mod closest_oracle;
 pub mod implicit_oracle;
 pub mod line_oracle;
 pub mod mesh_oracle;

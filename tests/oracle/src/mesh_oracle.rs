@@ -14,13 +14,13 @@ use core::cmp::Ordering;
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 
-type V = [BigInt; 3];
+pub(crate) type V = [BigInt; 3];
 
-fn sub(a: &V, b: &V) -> V {
+pub(crate) fn sub(a: &V, b: &V) -> V {
     core::array::from_fn(|k| &a[k] - &b[k])
 }
 
-fn dot(a: &V, b: &V) -> BigInt {
+pub(crate) fn dot(a: &V, b: &V) -> BigInt {
     &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
 }
 
