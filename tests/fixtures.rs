@@ -31,8 +31,8 @@ use exactray::scene::{MeshSide, TriangleMesh};
 use exactray::shape::{Cone, Cylinder, Quadric, Sphere, Triangle};
 use exactray_oracle::implicit_oracle::{self, Pt2, Pt3};
 use exactray_oracle::line_oracle::{LineAnswer, Quadratic, ulps_between};
-use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
+use exactray_oracle::{closest_oracle, mesh_oracle};
 use num_traits::Zero;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -356,8 +356,8 @@ const KINDS: &[Kind] = &[
     Kind {
         name: "mesh_closest",
         min_fields: 4,
-        predicate: None,
-        oracle: None,
+        predicate: Some(WholeFile(crate_mesh_closest)),
+        oracle: Some(WholeFile(oracle_mesh_closest)),
         scaling: Scaling::Tagged(MESH_CLOSEST_TAGS),
     },
 ];
@@ -1383,6 +1383,57 @@ fn oracle_mesh_side(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
                 got == *side,
                 format!("side {side}"),
                 format!("side {got}"),
+            ))
+        }
+        other => Err(not_this_kind(other)),
+    })
+}
+
+/// The crate on one `mesh_closest` query: `TriangleMesh::closest_point`
+/// must pick a listed triangle, and its squared distance with its
+/// certified error must hold the exact one, which lies within half an ulp
+/// of the file's `d2` (so within `[d2.next_down(), d2.next_up()]`).
+fn crate_mesh_closest(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |file: &MeshFile| {
+        TriangleMesh::new(&file.vertices, &file.triangles).map_err(|e| e.to_string())
+    };
+    mesh_queries(lines, setup, |_, mesh, q| match q {
+        MeshQuery::Closest { p, d2, tris } => {
+            let Some(c) = mesh.closest_point(*p).map_err(|e| e.to_string())? else {
+                return Ok(verdict(false, format!("{tris:?}"), "none".to_string()));
+            };
+            let (lo, hi) = (
+                c.squared_distance - c.squared_distance_error,
+                c.squared_distance + c.squared_distance_error,
+            );
+            // Each bound rounded once: one more step covers it.
+            let holds = lo.next_down() <= d2.next_up() && d2.next_down() <= hi.next_up();
+            Ok(verdict(
+                tris.contains(&(c.triangle as usize)) && holds,
+                format!("one of {tris:?} at {d2:e}"),
+                format!(
+                    "{} at {:e} +- {:e}",
+                    c.triangle, c.squared_distance, c.squared_distance_error
+                ),
+            ))
+        }
+        other => Err(not_this_kind(other)),
+    })
+}
+
+/// The oracle's exact squared distances (`closest_oracle`) must give the
+/// same least distance, rounded, and the same triangles.
+fn oracle_mesh_closest(lines: &[Vec<&str>]) -> Vec<(usize, Outcome)> {
+    let setup = |_: &MeshFile| -> Result<(), String> { Ok(()) };
+    mesh_queries(lines, setup, |file, _, q| match q {
+        MeshQuery::Closest { p, d2, tris } => {
+            let c =
+                closest_oracle::closest_triangles(*p, &file.vertices, &file.triangles, |_| true);
+            let least = c.least.map(|l| oracle::ratio_to_f64(&l.num, &l.den));
+            Ok(verdict(
+                least == Some(*d2) && c.ties == *tris,
+                format!("{d2:e} at {tris:?}"),
+                format!("{least:?} at {:?}", c.ties),
             ))
         }
         other => Err(not_this_kind(other)),

@@ -52,6 +52,7 @@ mod exact;
 
 use super::TriangleMesh;
 use super::batch::each_into;
+use super::crossings::on_closed_triangle;
 use crate::arith::exponent::{scale_pow2, unit_scale};
 use crate::bvh::boxes::{PointVisitor, box_distance_below, walk_point};
 use crate::error::InputError;
@@ -74,8 +75,11 @@ pub struct ClosestPoint {
     pub error: DVec3,
     /// The squared distance from the query to the triangle, within
     /// [`squared_distance_error`](Self::squared_distance_error) of the
-    /// exact one; `inf` (with an infinite error) where the exact one
-    /// exceeds `f64::MAX` (coordinates beyond about `2^511` apart).
+    /// exact one: exactly `0.0` (no error) for a query on the triangle;
+    /// `inf` (with an infinite error) where the exact one exceeds
+    /// `f64::MAX` (points beyond about `2^511` apart), and where the
+    /// coordinates exceed about `2^511`, so that the certified error of a
+    /// non-zero distance, which grows with their squares, would.
     pub squared_distance: f64,
     /// The certified error of [`squared_distance`](Self::squared_distance).
     pub squared_distance_error: f64,
@@ -204,6 +208,20 @@ impl TriangleMesh {
         let corners = self.corners(triangle);
         let scaled = corners.map(|v| scaled_point(v, s));
         let found = triangle_bounds::<true>(&nearest.scaled, &scaled);
+        // A query exactly on the triangle is its own closest point, at
+        // distance zero, with no error: decided exactly, since the
+        // enclosures' widths follow the squares of the coordinates, which
+        // leave `f64`'s range beyond about `2^511`.
+        let degenerate = self.triangle(triangle as usize).is_none_or(|t| t.degenerate);
+        if found.d2.lo <= 0.0 && on_closed_triangle(q, &corners, degenerate) {
+            return Some(ClosestPoint {
+                triangle,
+                point: q,
+                error: DVec3::ZERO,
+                squared_distance: 0.0,
+                squared_distance_error: 0.0,
+            });
+        }
         Some(answer(triangle, &found, &corners, s))
     }
 

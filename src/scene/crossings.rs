@@ -539,7 +539,7 @@ impl Visitor for SideWalk<'_> {
 /// Whether `p` lies on the closed triangle `v` (a segment or a point when
 /// `degenerate`), exactly: in its plane (`orient3d` zero) and inside or on
 /// its three edges in a coordinate plane where its projection has an area.
-fn on_closed_triangle(p: DVec3, v: &[DVec3; 3], degenerate: bool) -> bool {
+pub(super) fn on_closed_triangle(p: DVec3, v: &[DVec3; 3], degenerate: bool) -> bool {
     if degenerate {
         return (0..3).any(|i| on_segment(p, v[i], v[(i + 1) % 3]));
     }
