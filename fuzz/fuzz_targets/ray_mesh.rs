@@ -20,10 +20,10 @@ use exactray::interval::Interval;
 use exactray::query::ray::{EXACT_T_ULPS, Exact, Ray};
 use exactray::scene::TriangleMesh;
 use exactray::testing::{finite_f64_from_bits, lattice_point};
+use exactray_fuzz::LatticeMesh;
 use exactray_oracle::mesh_oracle;
 use exactray_oracle::oracle;
 use glam::DVec3;
-use exactray_fuzz::LatticeMesh;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

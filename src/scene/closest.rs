@@ -212,7 +212,9 @@ impl TriangleMesh {
         // distance zero, with no error: decided exactly, since the
         // enclosures' widths follow the squares of the coordinates, which
         // leave `f64`'s range beyond about `2^511`.
-        let degenerate = self.triangle(triangle as usize).is_none_or(|t| t.degenerate);
+        let degenerate = self
+            .triangle(triangle as usize)
+            .is_none_or(|t| t.degenerate);
         if found.d2.lo <= 0.0 && on_closed_triangle(q, &corners, degenerate) {
             return Some(ClosestPoint {
                 triangle,
